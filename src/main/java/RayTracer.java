@@ -1,0 +1,10 @@
+/**
+ * The course framework's entry point: {@code java RayTracer scene.txt [more.txt ...]} renders each
+ * scene to a PNG beside it; with no arguments the Swing viewer opens. Everything lives in
+ * {@link ray.app.Main}; this class stays in the default package so the original command works.
+ */
+public class RayTracer {
+    public static void main(String[] args) {
+        System.exit(ray.app.Main.run(args));
+    }
+}

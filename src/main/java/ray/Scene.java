@@ -1,0 +1,137 @@
+package ray;
+
+import java.util.ArrayList;
+import java.util.List;
+import javax.vecmath.Vector3d;
+import ray.accel.Accelerator;
+import ray.accel.Bvh;
+import ray.light.Light;
+import ray.light.LightSample;
+import ray.material.Material;
+import ray.render.Image;
+import ray.render.Renderer;
+import ray.surface.Surface;
+
+/**
+ * Everything a render needs: camera, surfaces, lights, materials and the global settings of the scene
+ * file ({@code BGColor}, {@code AmbientLight}, {@code Width}, {@code Height}, {@code AASamples},
+ * {@code MaxDepth}).
+ *
+ * <p>The framework's methods are kept: {@link #renderAll()}, {@link #renderPixel(int, int)} and
+ * {@link #trace(Ray)}. Before the first ray, {@link #prepare()} builds the BVH over the surfaces; call
+ * it again after changing the scene.
+ */
+public class Scene {
+
+    public Camera camera;
+    public Vector3d backgroundColor = new Vector3d();
+    public Vector3d ambientLight = new Vector3d();
+    public int width;
+    public int height;
+    /** n_s: each pixel is the mean of n_s x n_s samples. */
+    public int samplesPerPixel = 1;
+    /** Mirror bounces followed (0: the bases of glazed materials only). */
+    public int maxDepth = 10;
+    public List<Surface> surfaces = new ArrayList<>();
+    public List<Light> lights = new ArrayList<>();
+    public List<Material> materials = new ArrayList<>();
+
+    private volatile Accelerator accel;
+
+    /**
+     * Validates the objects, fixes the camera frame and builds the acceleration structure. Called by
+     * the renderer and, lazily, by the first {@link #trace}; idempotent.
+     */
+    public synchronized void prepare() {
+        if (camera == null) {
+            throw new IllegalStateException("the scene has no camera");
+        }
+        if (Double.isNaN(camera.aspect) && width > 0 && height > 0) {
+            camera.aspect = (double) width / height;
+        }
+        camera.init();
+        accel = Bvh.build(surfaces, this);
+    }
+
+    /** The acceleration structure, built on first use. */
+    public Accelerator accelerator() {
+        Accelerator a = accel;
+        if (a == null) {
+            prepare();
+            a = accel;
+        }
+        return a;
+    }
+
+    /** Renders the whole image: {@code [x][y]}, x across, y down from the top row. */
+    public Vector3d[][] renderAll() {
+        return new Renderer(this).render().toVectors();
+    }
+
+    /** The colour of pixel (x, y): the mean of its n_s x n_s samples. */
+    public Vector3d renderPixel(int x, int y) {
+        Vector3d out = new Vector3d();
+        new Renderer(this).renderPixel(TraceContext.current(this), x, y, out);
+        return out;
+    }
+
+    /** The colour seen along {@code ray}: the hit surface's material, or {@code BGColor} where nothing is hit. */
+    public Vector3d trace(Ray ray) {
+        TraceContext ctx = TraceContext.current(this);
+        Vector3d out = new Vector3d();
+        int depth = Math.max(ray.depth, ctx.level);
+        if (depth > maxDepth) {
+            return out;   // a user material recursing past MaxDepth: not followed, black
+        }
+        Ray r = new Ray();
+        r.origin.set(ray.origin);
+        r.direction.set(ray.direction);
+        r.tMin = ray.tMin;
+        r.tMax = ray.tMax;
+        r.depth = depth;
+        traceInto(r, ctx, out);
+        return out;
+    }
+
+    /** Allocation-free {@link #trace}: writes the colour into {@code out}. */
+    public void traceInto(Ray ray, TraceContext ctx, Vector3d out) {
+        IntersectionRecord rec = ctx.record(ray.depth);
+        if (!accelerator().closestHit(ray, rec, ctx)) {
+            out.set(backgroundColor);
+            return;
+        }
+        Material m = rec.surface.material;
+        m.shade(ray, rec, this, ctx, out);
+    }
+
+    /** The closest hit along {@code ray} within its span, written into {@code record}; false on a miss. */
+    public boolean intersect(Ray ray, IntersectionRecord record) {
+        return accelerator().closestHit(ray, record, TraceContext.current(this));
+    }
+
+    /** True when anything lies on {@code ray} within its span (a shadow query). */
+    public boolean occluded(Ray ray) {
+        TraceContext ctx = TraceContext.current(this);
+        ctx.stats.shadow++;
+        return accelerator().anyHit(ray, ctx);
+    }
+
+    /** True when something lies between {@code record}'s point and the light sample's position. */
+    public boolean occluded(IntersectionRecord record, LightSample sample) {
+        return occluded(record, sample, TraceContext.current(this));
+    }
+
+    /** Allocation-free shadow query for a light sample, on {@code ctx}'s shadow ray. */
+    public boolean occluded(IntersectionRecord record, LightSample sample, TraceContext ctx) {
+        Ray s = ctx.shadowRay;
+        Vector3d p = sample.position;
+        record.spawnRayTo(p.x, p.y, p.z, s);
+        ctx.stats.shadow++;
+        return accelerator().anyHit(s, ctx);
+    }
+
+    /** Renders into an {@link Image} (linear colours) with this scene's settings. */
+    public Image render() {
+        return new Renderer(this).render();
+    }
+}

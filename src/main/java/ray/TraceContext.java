@@ -1,0 +1,81 @@
+package ray;
+
+import javax.vecmath.Vector3d;
+import ray.light.LightSample;
+
+/**
+ * One render thread's scratch objects: a ray, a hit record and a colour per recursion depth, the
+ * shadow ray, the light sample, the traversal stack and the ray counters. Everything the hot path
+ * needs is here, so tracing a ray allocates nothing. Never shared between threads.
+ */
+public final class TraceContext {
+
+    private static final ThreadLocal<TraceContext> CURRENT = new ThreadLocal<>();
+
+    private Ray[] rays = new Ray[0];
+    private IntersectionRecord[] records = new IntersectionRecord[0];
+    private Vector3d[] colors = new Vector3d[0];
+
+    public final Ray shadowRay = new Ray();
+    public final IntersectionRecord scratchRecord = new IntersectionRecord();
+    public final LightSample lightSample = new LightSample();
+    public final RayStats stats = new RayStats();
+    /** BVH traversal stack (node indices); 64 levels is deeper than any SAH tree over 2^31 primitives. */
+    public final int[] stack = new int[128];
+    /** Ray set-up for watertight triangle tests, filled once per ray by the accelerator. */
+    public final double[] rayKernel = new double[ray.surface.Triangle.KERNEL_SIZE];
+    /** Nesting of {@link Scene#trace(Ray)} calls made from inside material code (bounds user recursion). */
+    public int level;
+
+    public TraceContext(int maxDepth) {
+        grow(maxDepth + 2);
+    }
+
+    /** The calling thread's context, made on first use (for code that calls the framework API directly). */
+    public static TraceContext current(Scene scene) {
+        TraceContext c = CURRENT.get();
+        if (c == null) {
+            c = new TraceContext(scene.maxDepth);
+            CURRENT.set(c);
+        }
+        return c;
+    }
+
+    /** Makes {@code c} the calling thread's context (render workers do this once). */
+    public static void bind(TraceContext c) {
+        CURRENT.set(c);
+    }
+
+    public Ray ray(int depth) {
+        if (depth >= rays.length) {
+            grow(depth + 2);
+        }
+        return rays[depth];
+    }
+
+    public IntersectionRecord record(int depth) {
+        if (depth >= records.length) {
+            grow(depth + 2);
+        }
+        return records[depth];
+    }
+
+    public Vector3d color(int depth) {
+        if (depth >= colors.length) {
+            grow(depth + 2);
+        }
+        return colors[depth];
+    }
+
+    private void grow(int n) {
+        int old = rays.length;
+        rays = java.util.Arrays.copyOf(rays, n);
+        records = java.util.Arrays.copyOf(records, n);
+        colors = java.util.Arrays.copyOf(colors, n);
+        for (int i = old; i < n; i++) {
+            rays[i] = new Ray();
+            records[i] = new IntersectionRecord();
+            colors[i] = new Vector3d();
+        }
+    }
+}

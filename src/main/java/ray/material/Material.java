@@ -1,0 +1,56 @@
+package ray.material;
+
+import javax.vecmath.Vector3d;
+import ray.IntersectionRecord;
+import ray.Ray;
+import ray.Scene;
+import ray.SceneObject;
+import ray.TraceContext;
+
+/**
+ * How a surface reflects light. The framework's contract is {@link #shade}: the colour leaving
+ * {@code record.location} back along {@code ray}.
+ *
+ * <p>The renderer calls the allocation-free {@link #shade(Ray, IntersectionRecord, Scene,
+ * TraceContext, Vector3d)}; its default calls {@link #shade(Ray, IntersectionRecord, Scene)}, so a
+ * material written against the framework works unchanged. Built-in materials implement the fast form
+ * and let the framework form call it.
+ */
+public abstract class Material implements SceneObject {
+
+    public abstract Vector3d shade(Ray ray, IntersectionRecord record, Scene scene);
+
+    /**
+     * Writes the colour leaving {@code record.location} back along {@code ray} into {@code out}, using
+     * only {@code ctx}'s scratch objects. {@code record} belongs to the caller and must not be kept.
+     */
+    public void shade(Ray ray, IntersectionRecord record, Scene scene, TraceContext ctx, Vector3d out) {
+        ctx.level++;
+        try {
+            Vector3d c = shade(ray, record, scene);
+            if (c == null) {
+                out.set(0, 0, 0);
+            } else {
+                out.set(c);
+            }
+        } finally {
+            ctx.level--;
+        }
+    }
+
+    /** Framework form of the fast path, for built-in materials: runs it on this thread's context. */
+    protected final Vector3d shadeWithContext(Ray ray, IntersectionRecord record, Scene scene) {
+        Vector3d out = new Vector3d();
+        TraceContext ctx = TraceContext.current(scene);
+        IntersectionRecord copy = new IntersectionRecord();
+        copy.set(record);
+        shade(ray, copy, scene, ctx, out);
+        return out;
+    }
+
+    static void requireColor(String name, Vector3d c) {
+        if (!Double.isFinite(c.x) || !Double.isFinite(c.y) || !Double.isFinite(c.z)) {
+            throw new IllegalArgumentException(name + " must be finite numbers, got " + c);
+        }
+    }
+}

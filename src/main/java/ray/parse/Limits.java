@@ -1,0 +1,28 @@
+package ray.parse;
+
+/**
+ * The largest settings the parser accepts, so that an absurd scene is refused before anything is
+ * allocated. The image size limit follows the JVM's heap: raise it with {@code -Xmx} (for the
+ * launcher: {@code JAVA_OPTS=-Xmx16g raytracer big.txt}).
+ */
+public final class Limits {
+
+    /** Largest Width or Height. */
+    public static final int MAX_SIDE = 1 << 16;
+    /** Largest n_s (n_s x n_s = 4,096 samples per pixel). */
+    public static final int MAX_AA_SAMPLES = 64;
+    /** Largest MaxDepth. */
+    public static final int MAX_DEPTH = 1000;
+    /** Bytes the renderer needs per pixel: linear RGB doubles, the 8-bit image and the PNG encoder's copy. */
+    public static final long BYTES_PER_PIXEL = 24 + 4 + 4;
+    /** Longest line a scene file may have. */
+    public static final int MAX_LINE = 1 << 16;
+
+    private Limits() {
+    }
+
+    /** The most pixels an image may have in this JVM: half the heap it may use. */
+    public static long maxPixels() {
+        return Runtime.getRuntime().maxMemory() / 2 / BYTES_PER_PIXEL;
+    }
+}

@@ -1,0 +1,54 @@
+package ray.render;
+
+import java.io.IOException;
+import java.io.OutputStream;
+import java.nio.file.AtomicMoveNotSupportedException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import javax.imageio.ImageIO;
+
+/**
+ * Writes PNGs atomically: the image goes to a temporary file in the target's directory, which is then
+ * renamed over the target. A failed or interrupted write never leaves a partial PNG and never
+ * clobbers the existing one.
+ */
+public final class PngWriter {
+
+    private PngWriter() {
+    }
+
+    public static void write(Image image, Path target) throws IOException {
+        Path dir = target.toAbsolutePath().getParent();
+        Path tmp = Files.createTempFile(dir, "." + target.getFileName() + ".", ".tmp");
+        Thread cleanup = new Thread(() -> deleteQuietly(tmp));
+        Runtime.getRuntime().addShutdownHook(cleanup);   // Ctrl-C during the write: no stray temp file
+        try {
+            try (OutputStream out = Files.newOutputStream(tmp)) {
+                if (!ImageIO.write(image.toBufferedImage(), "png", out)) {
+                    throw new IOException("no PNG writer available");
+                }
+            }
+            try {
+                Files.move(tmp, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
+            } catch (AtomicMoveNotSupportedException e) {
+                Files.move(tmp, target, StandardCopyOption.REPLACE_EXISTING);
+            }
+        } finally {
+            deleteQuietly(tmp);
+            try {
+                Runtime.getRuntime().removeShutdownHook(cleanup);
+            } catch (IllegalStateException shuttingDown) {
+                // the hook runs anyway
+            }
+        }
+    }
+
+    private static void deleteQuietly(Path p) {
+        try {
+            Files.deleteIfExists(p);
+        } catch (IOException ignored) {
+            // best effort: the temporary file is hidden and named after the target
+        }
+    }
+}

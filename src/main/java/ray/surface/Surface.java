@@ -1,0 +1,34 @@
+package ray.surface;
+
+import ray.IntersectionRecord;
+import ray.Ray;
+import ray.Scene;
+import ray.SceneObject;
+import ray.accel.Aabb;
+import ray.material.Material;
+
+/**
+ * Something a ray can hit. The framework's contract is {@link #intersects}: true for a hit with t in
+ * {@code [ray.tMin, ray.tMax]}, and then {@code record} is filled in (location, unit normal facing the
+ * ray, t, surface); on a miss the record is left as it was.
+ *
+ * <p>A subclass that also overrides {@link #bounds()} goes into the scene's BVH; one that does not is
+ * tested against every ray (correct, just slower).
+ */
+public abstract class Surface implements SceneObject {
+
+    /** {@code ref material <name>} in a scene file. */
+    public Material material;
+
+    public abstract boolean intersects(Ray ray, IntersectionRecord record, Scene scene);
+
+    /** World-space bounding box; the default (infinite) keeps the surface out of the BVH. */
+    public Aabb bounds() {
+        return Aabb.infinite();
+    }
+
+    /** True when the surface can never be hit (e.g. a zero-area triangle); it is left out of the scene. */
+    public boolean isDegenerate() {
+        return false;
+    }
+}

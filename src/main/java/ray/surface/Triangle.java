@@ -1,0 +1,184 @@
+package ray.surface;
+
+import javax.vecmath.Vector3d;
+import ray.IntersectionRecord;
+import ray.Ray;
+import ray.Scene;
+import ray.accel.Aabb;
+
+/**
+ * A one-sided triangle: only rays arriving from the side of n = (v1 - v0) x (v2 - v0) hit it (and
+ * only those are blocked by it as shadow rays). A ray lying in its plane misses; a zero-area triangle
+ * is never hit.
+ *
+ * <pre>
+ * Surface Triangle
+ * Vector3d v0 [0 0 0]
+ * Vector3d v1 [1 0 0]
+ * Vector3d v2 [0 1 0]
+ * ref material red
+ * </pre>
+ *
+ * The test is the watertight algorithm of Woop, Benthin and Wald (JCGT 2013): the vertices are moved
+ * into a frame where the ray runs along +z, and the 2D edge functions are computed from the same
+ * vertex values for both triangles that share an edge, so a ray through a shared edge or vertex of a
+ * closed mesh cannot slip between them.
+ */
+public class Triangle extends Surface {
+
+    /** Relative rounding-error bound of a hit point computed from barycentrics (a generous gamma(32)). */
+    static final double ERROR = 32 * 0x1p-53;
+
+    public Vector3d v0 = new Vector3d();
+    public Vector3d v1 = new Vector3d(1, 0, 0);
+    public Vector3d v2 = new Vector3d(0, 1, 0);
+
+    @Override
+    public void init() {
+        for (Vector3d v : new Vector3d[] {v0, v1, v2}) {
+            if (!Double.isFinite(v.x) || !Double.isFinite(v.y) || !Double.isFinite(v.z)) {
+                throw new IllegalArgumentException("triangle vertices must be finite, got " + v);
+            }
+        }
+    }
+
+    /** Zero area: the edges are parallel to double precision (or a vertex repeats). */
+    @Override
+    public boolean isDegenerate() {
+        double ax = v1.x - v0.x, ay = v1.y - v0.y, az = v1.z - v0.z;
+        double bx = v2.x - v0.x, by = v2.y - v0.y, bz = v2.z - v0.z;
+        double nx = ay * bz - az * by, ny = az * bx - ax * bz, nz = ax * by - ay * bx;
+        double n = Math.sqrt(nx * nx + ny * ny + nz * nz);
+        double ea = Math.sqrt(ax * ax + ay * ay + az * az), eb = Math.sqrt(bx * bx + by * by + bz * bz);
+        return !(n > 1e-14 * ea * eb);
+    }
+
+    @Override
+    public boolean intersects(Ray ray, IntersectionRecord record, Scene scene) {
+        if (isDegenerate()) {
+            return false;
+        }
+        double[] v = {v0.x, v0.y, v0.z, v1.x, v1.y, v1.z, v2.x, v2.y, v2.z};
+        double[] k = new double[KERNEL_SIZE];
+        setupRay(ray, k);
+        double t = hit(v, 0, k, ray.tMin, ray.tMax);
+        if (Double.isNaN(t)) {
+            return false;
+        }
+        fill(v, 0, k, t, record);
+        record.surface = this;
+        return true;
+    }
+
+    @Override
+    public Aabb bounds() {
+        Aabb b = new Aabb();
+        b.include(v0.x, v0.y, v0.z);
+        b.include(v1.x, v1.y, v1.z);
+        b.include(v2.x, v2.y, v2.z);
+        return b;
+    }
+
+    // ---- the watertight kernel, shared with the BVH (vertices packed 9 doubles per triangle) ----
+
+    /** Length of the per-ray array used by {@link #setupRay} and {@link #hit}. */
+    public static final int KERNEL_SIZE = 12;
+    private static final int SX = 3, SY = 4, SZ = 5, OX = 6, OY = 7, OZ = 8, B0 = 9, B1 = 10, B2 = 11;
+
+    /**
+     * Per-ray set-up: kz the dominant axis of the direction, kx and ky the others (swapped when d[kz]
+     * is negative, to keep the winding), the shear constants, and the origin in that axis order.
+     */
+    public static void setupRay(Ray ray, double[] k) {
+        double dx = ray.direction.x, dy = ray.direction.y, dz = ray.direction.z;
+        double ax = Math.abs(dx), ay = Math.abs(dy), az = Math.abs(dz);
+        int kz = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
+        int kx = kz == 2 ? 0 : kz + 1;
+        int ky = kx == 2 ? 0 : kx + 1;
+        double dkz = component(kz, dx, dy, dz);
+        if (dkz < 0) {
+            int tmp = kx;
+            kx = ky;
+            ky = tmp;
+        }
+        k[0] = kx;
+        k[1] = ky;
+        k[2] = kz;
+        k[SX] = component(kx, dx, dy, dz) / dkz;
+        k[SY] = component(ky, dx, dy, dz) / dkz;
+        k[SZ] = 1.0 / dkz;
+        Vector3d o = ray.origin;
+        k[OX] = component(kx, o.x, o.y, o.z);
+        k[OY] = component(ky, o.x, o.y, o.z);
+        k[OZ] = component(kz, o.x, o.y, o.z);
+    }
+
+    private static double component(int axis, double x, double y, double z) {
+        return axis == 0 ? x : axis == 1 ? y : z;
+    }
+
+    /**
+     * The t in [tMin, tMax] where the ray set up in {@code k} hits the front of the triangle stored at
+     * {@code v[off..off+8]}, or NaN. On a hit the barycentric weights are left in {@code k}.
+     */
+    public static double hit(double[] v, int off, double[] k, double tMin, double tMax) {
+        int kx = (int) k[0], ky = (int) k[1], kz = (int) k[2];
+        double ox = k[OX], oy = k[OY], oz = k[OZ];
+        // vertices relative to the origin, in the ray's axis order
+        double ax = v[off + kx] - ox, ay = v[off + ky] - oy, az = v[off + kz] - oz;
+        double bx = v[off + 3 + kx] - ox, by = v[off + 3 + ky] - oy, bz = v[off + 3 + kz] - oz;
+        double cx = v[off + 6 + kx] - ox, cy = v[off + 6 + ky] - oy, cz = v[off + 6 + kz] - oz;
+        // shear so the ray runs along +z
+        double sx = k[SX], sy = k[SY];
+        ax -= sx * az; ay -= sy * az;
+        bx -= sx * bz; by -= sy * bz;
+        cx -= sx * cz; cy -= sy * cz;
+        // edge functions; the front side gives all three >= 0
+        double u = cx * by - cy * bx;
+        double w0 = ax * cy - ay * cx;
+        double w1 = bx * ay - by * ax;
+        if (u < 0 || w0 < 0 || w1 < 0) {
+            return Double.NaN;
+        }
+        double det = u + w0 + w1;
+        if (!(det > 0)) {
+            return Double.NaN;      // ray in the triangle's plane, or seen from behind on an edge
+        }
+        double sz = k[SZ];
+        double tScaled = sz * (u * az + w0 * bz + w1 * cz);
+        if (tScaled < tMin * det || tScaled > tMax * det) {
+            return Double.NaN;
+        }
+        double inv = 1 / det;
+        k[B0] = u * inv;
+        k[B1] = w0 * inv;
+        k[B2] = w1 * inv;
+        return tScaled * inv;
+    }
+
+    /** Fills a record for the hit just found by {@link #hit}: point from the barycentrics, unit normal. */
+    public static void fill(double[] v, int off, double[] k, double t, IntersectionRecord rec) {
+        double b0 = k[B0], b1 = k[B1], b2 = k[B2];
+        double x0 = v[off], y0 = v[off + 1], z0 = v[off + 2];
+        double x1 = v[off + 3], y1 = v[off + 4], z1 = v[off + 5];
+        double x2 = v[off + 6], y2 = v[off + 7], z2 = v[off + 8];
+        rec.location.set(b0 * x0 + b1 * x1 + b2 * x2, b0 * y0 + b1 * y1 + b2 * y2, b0 * z0 + b1 * z1 + b2 * z2);
+        double ex = x1 - x0, ey = y1 - y0, ez = z1 - z0;
+        double fx = x2 - x0, fy = y2 - y0, fz = z2 - z0;
+        double nx = ey * fz - ez * fy, ny = ez * fx - ex * fz, nz = ex * fy - ey * fx;
+        double len = Math.sqrt(nx * nx + ny * ny + nz * nz);
+        rec.normal.set(nx / len, ny / len, nz / len);
+        rec.frontFace = true;
+        rec.t = t;
+        double m = 0;
+        for (int i = 0; i < 9; i++) {
+            m = Math.max(m, Math.abs(v[off + i]));
+        }
+        rec.error = ERROR * m;
+    }
+
+    @Override
+    public String toString() {
+        return "Triangle[" + v0 + ", " + v1 + ", " + v2 + "]";
+    }
+}
