@@ -17,6 +17,8 @@ import ray.TraceContext;
 public final class Renderer {
 
     public static final int TILE = 16;
+    /** Stack per render thread: room for MaxDepth up to the parser's limit whatever -Xss says. */
+    private static final long STACK_BYTES = 256L << 20;
 
     private final Scene scene;
     private int threads = Runtime.getRuntime().availableProcessors();
@@ -98,14 +100,10 @@ public final class Renderer {
                     TraceContext.bind(null);
                 }
             };
-            if (n == 1) {
-                work.run();
-            } else {
-                Thread th = new Thread(work, "render-" + t);
-                th.setDaemon(true);
-                workers.add(th);
-                th.start();
-            }
+            Thread th = new Thread(null, work, "render-" + t, STACK_BYTES);
+            th.setDaemon(true);
+            workers.add(th);
+            th.start();
         }
         for (Thread th : workers) {
             try {
