@@ -34,7 +34,7 @@ class ReadmeExampleTest {
         assertEquals(List.of(), warnings);
         assertEquals(320, s.width);
         assertEquals(3, s.samplesPerPixel);
-        assertEquals(4, s.materials.size());
+        assertEquals(3, s.materials.size());
         assertEquals(3, s.surfaces.size());
         assertEquals(1, s.lights.size());
     }
