@@ -114,6 +114,11 @@ public final class Main implements Callable<Integer> {
         warnings.forEach(err::println);
         long t1 = System.nanoTime();
         Renderer renderer = new Renderer(scene).threads(threads);
+        ProgressLine progress = !quiet && err == System.err && System.console() != null
+                ? new ProgressLine(err, scenePath.toString()) : null;
+        if (progress != null) {
+            renderer.listener(progress);
+        }
         Image image;
         try {
             image = renderer.render();
@@ -123,6 +128,10 @@ public final class Main implements Callable<Integer> {
         } catch (IllegalArgumentException | IllegalStateException e) {
             err.println(scenePath + ": " + e.getMessage());
             return false;
+        } finally {
+            if (progress != null) {
+                progress.clear();
+            }
         }
         long t2 = System.nanoTime();
         try {
