@@ -5,6 +5,9 @@
  */
 public class RayTracer {
     public static void main(String[] args) {
-        System.exit(ray.app.Main.run(args));
+        int status = ray.app.Main.run(args);
+        if (status != ray.app.Main.VIEWER_OPEN) {
+            System.exit(status);
+        }
     }
 }

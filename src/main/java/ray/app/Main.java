@@ -45,6 +45,12 @@ public final class Main implements Callable<Integer> {
     @Option(names = "--stats", description = "print parse and render times and rays by kind")
     boolean stats;
 
+    @Option(names = "--view", description = "open the viewer on the (first) scene instead of writing a PNG")
+    boolean view;
+
+    /** What {@link #run} returns when the viewer was opened: the JVM must keep running (no System.exit). */
+    public static final int VIEWER_OPEN = -1;
+
     private PrintStream out = System.out;
     private PrintStream err = System.err;
 
@@ -73,13 +79,13 @@ public final class Main implements Callable<Integer> {
             err.println("raytracer: --output needs exactly one scene file");
             return 2;
         }
-        if (scenes.isEmpty()) {
+        if (scenes.isEmpty() || view) {
             if (GraphicsEnvironment.isHeadless()) {
                 err.println("raytracer: no display for the viewer; give scene files to render (see --help)");
                 return 2;
             }
-            ray.viewer.ViewingFrame.open();
-            return 0;
+            ray.viewer.ViewingFrame.open(scenes.isEmpty() ? null : scenes.get(0));
+            return VIEWER_OPEN;
         }
         int failed = 0;
         for (Path scene : scenes) {

@@ -58,9 +58,16 @@ public final class ViewingFrame extends JFrame {
         pack();
     }
 
-    /** Opens a viewer window (on the Swing thread). */
-    public static void open() {
-        SwingUtilities.invokeLater(() -> new ViewingFrame().setVisible(true));
+    /** Opens a viewer window (on the Swing thread), rendering {@code scene} if it is not null. */
+    public static void open(Path scene) {
+        SwingUtilities.invokeLater(() -> {
+            ViewingFrame f = new ViewingFrame();
+            f.setVisible(true);
+            if (scene != null) {
+                f.lastDir = scene.toAbsolutePath().getParent().toFile();
+                f.load(scene);
+            }
+        });
     }
 
     private JMenuItem item(String text, int key, Runnable action) {
