@@ -45,7 +45,7 @@ class GlazedMaterialTest {
     }
 
     @Test
-    void baseplusMirrorOfBackground() {
+    void basePlusMirrorOfBackground() {
         Scene s = sky();
         assertColor(0.69 + 0.1, 0.74 + 0.2, 0.78 + 0.3, fast(glazed(base(), 0.5), viewRay(), record(), s), "with base");
         assertFormsAgree(glazed(base(), 0.5), viewRay(), record(), s);

@@ -133,7 +133,7 @@ class RendererTest {
     @Test
     void renderAllIsIndexedXThenYFromTop() throws Exception {
         // a triangle with its right angle at the origin covering x < 0, y > 0: the image's top-left
-        // quadrant (6 x 8 pixels: columns 0-2, rows 0-1); k_a I_a = (0.5, 0.25, 1)
+        // quadrant of the 6 x 4 image (columns 0-2, rows 0-1); k_a I_a = (0.5, 0.25, 1)
         Scene s = Parser.parse("""
                 Width 6
                 Height 4

@@ -203,7 +203,7 @@ class SphereTest {
     }
 
     @Test
-    void boundsAreCentreplusMinusRadius() {
+    void boundsAreCentrePlusMinusRadius() {
         Aabb b = sphere(1, 2, 3, 0.5).bounds();
         assertEquals(0.5, b.minX);
         assertEquals(1.5, b.minY);
