@@ -70,6 +70,7 @@ public class Scene {
 
     /** The colour of pixel (x, y): the mean of its n_s x n_s samples. */
     public Vector3d renderPixel(int x, int y) {
+        accelerator();   // prepares a scene not rendered yet: the camera frame is set up there
         Vector3d out = new Vector3d();
         new Renderer(this).renderPixel(TraceContext.current(this), x, y, out);
         return out;

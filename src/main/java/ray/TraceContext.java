@@ -24,7 +24,11 @@ public final class TraceContext {
     public final int[] stack = new int[128];
     /** Ray set-up for watertight triangle tests, filled once per ray by the accelerator. */
     public final double[] rayKernel = new double[ray.surface.Triangle.KERNEL_SIZE];
-    /** Nesting of {@link Scene#trace(Ray)} calls made from inside material code (bounds user recursion). */
+    /**
+     * While framework-style material code runs, the depth of the rays it traces with {@link Scene#trace(Ray)}:
+     * one more than the ray it is shading (0 outside such code). Bounds user recursion by MaxDepth and keeps
+     * a nested trace off the records still in use.
+     */
     public int level;
 
     public TraceContext(int maxDepth) {

@@ -2,6 +2,7 @@ package ray.accel;
 
 import java.util.ArrayList;
 import java.util.List;
+import javax.vecmath.Vector3d;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.Scene;
@@ -133,7 +134,7 @@ public final class Bvh implements Accelerator {
         try {
             for (Surface s : unbounded) {
                 ray.tMax = best;
-                if (s.intersects(ray, rec, scene)) {
+                if (userHit(s, ray, rec)) {
                     best = rec.t;
                     hit = OTHER | (-1 << 2);
                     finishOther(ray, rec, s);
@@ -180,7 +181,7 @@ public final class Bvh implements Accelerator {
                                 default: {
                                     ray.tMax = best;
                                     Surface s = others[idx];
-                                    if (s.intersects(ray, rec, scene)) {
+                                    if (userHit(s, ray, rec)) {
                                         best = rec.t;
                                         hit = p;
                                         finishOther(ray, rec, s);
@@ -231,6 +232,25 @@ public final class Bvh implements Accelerator {
         }
     }
 
+    /**
+     * Calls a user surface's own intersects. Framework code may point the record's vectors at its own
+     * objects ({@code record.normal = normal}); the record gets its own vectors back, holding the values,
+     * so later writes into the record (the next hit's fill) cannot change the surface's fields.
+     */
+    private boolean userHit(Surface s, Ray ray, IntersectionRecord rec) {
+        Vector3d location = rec.location, normal = rec.normal;
+        boolean hit = s.intersects(ray, rec, scene);
+        if (rec.location != location) {
+            location.set(rec.location);
+            rec.location = location;
+        }
+        if (rec.normal != normal) {
+            normal.set(rec.normal);
+            rec.normal = normal;
+        }
+        return hit;
+    }
+
     /** A user surface's record: make sure its normal faces the ray and its error bound is set. */
     private static void finishOther(Ray ray, IntersectionRecord rec, Surface s) {
         rec.surface = s;
@@ -246,7 +266,7 @@ public final class Bvh implements Accelerator {
     public boolean anyHit(Ray ray, TraceContext ctx) {
         IntersectionRecord scratch = ctx.scratchRecord;
         for (Surface s : unbounded) {
-            if (s.intersects(ray, scratch, scene)) {
+            if (userHit(s, ray, scratch)) {
                 return true;
             }
         }
@@ -283,7 +303,7 @@ public final class Bvh implements Accelerator {
                                 break;
                             }
                             default:
-                                if (others[idx].intersects(ray, scratch, scene)) {
+                                if (userHit(others[idx], ray, scratch)) {
                                     return true;
                                 }
                         }

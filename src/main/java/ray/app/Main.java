@@ -134,6 +134,13 @@ public final class Main implements Callable<Integer> {
         } catch (IllegalArgumentException | IllegalStateException e) {
             err.println(scenePath + ": " + e.getMessage());
             return false;
+        } catch (RuntimeException e) {
+            // a bug in the scene's own classes (a student's material, say): report it, go on to the next scene
+            StackTraceElement[] where = e.getStackTrace();
+            err.println(scenePath + ": rendering failed: " + e.getClass().getSimpleName()
+                    + (e.getMessage() == null ? "" : " (" + e.getMessage() + ")")
+                    + (where.length == 0 ? "" : " at " + where[0]));
+            return false;
         } finally {
             if (progress != null) {
                 progress.clear();

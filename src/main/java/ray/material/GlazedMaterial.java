@@ -45,7 +45,9 @@ public class GlazedMaterial extends Material {
         } else {
             out.set(0, 0, 0);
         }
-        int depth = Math.max(ray.depth, ctx.level);
+        // inside framework-style material code, ctx.level is the depth of the rays it traces: one more
+        // than the ray it is shading (which may be a fresh Ray of depth 0 it made itself)
+        int depth = Math.max(ray.depth, ctx.level - 1);
         if (mirrorCoefficient == 0 || depth >= scene.maxDepth) {
             return;
         }

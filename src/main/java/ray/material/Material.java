@@ -25,7 +25,10 @@ public abstract class Material implements SceneObject {
      * only {@code ctx}'s scratch objects. {@code record} belongs to the caller and must not be kept.
      */
     public void shade(Ray ray, IntersectionRecord record, Scene scene, TraceContext ctx, Vector3d out) {
-        ctx.level++;
+        // a ray this code traces (scene.trace) is one bounce deeper than the ray being shaded, so it
+        // gets the next depth's record and never the one passed in here
+        int saved = ctx.level;
+        ctx.level = Math.max(ctx.level, ray.depth) + 1;
         try {
             Vector3d c = shade(ray, record, scene);
             if (c == null) {
@@ -34,7 +37,7 @@ public abstract class Material implements SceneObject {
                 out.set(c);
             }
         } finally {
-            ctx.level--;
+            ctx.level = saved;
         }
     }
 
