@@ -3,6 +3,7 @@ package ray.parse;
 import java.lang.reflect.Constructor;
 import java.lang.reflect.Modifier;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import ray.Camera;
@@ -28,6 +29,8 @@ final class ClassResolver {
     private static final String[] PACKAGES = {"ray.surface.", "ray.material.", "ray.light.", "ray."};
 
     private final ClassLoader loader;
+    /** Classes already resolved in this file, by header type and name: a failed lookup costs an exception. */
+    private final Map<String, Class<?>> resolved = new HashMap<>();
 
     ClassResolver(ClassLoader loader) {
         this.loader = loader;
@@ -35,6 +38,16 @@ final class ClassResolver {
 
     /** The class for {@code name} under header {@code type}; a message for the user on failure. */
     Class<?> resolve(String type, String name) throws Problem {
+        String key = type + " " + name;
+        Class<?> c = resolved.get(key);
+        if (c == null) {
+            c = lookUp(type, name);
+            resolved.put(key, c);
+        }
+        return c;
+    }
+
+    private Class<?> lookUp(String type, String name) throws Problem {
         Class<?> base = BASES.get(type);
         String expected = " (expected " + builtIns(type) + " or a " + type + " class of your own)";
         if (!isClassName(name)) {
