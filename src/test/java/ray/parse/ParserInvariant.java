@@ -1,0 +1,35 @@
+package ray.parse;
+
+import java.nio.charset.StandardCharsets;
+import java.util.ArrayList;
+
+/** What every input must give, shared by the fuzz and mutation tests: a scene, or a well-formed SceneFormatException. */
+final class ParserInvariant {
+
+    private ParserInvariant() {
+    }
+
+    /** Parses {@code data} as bytes and as text; anything but success or a one-line located SceneFormatException escapes. */
+    static void check(byte[] data) {
+        try {
+            Parser.parse(data, "fuzz.txt", new ArrayList<>());
+        } catch (SceneFormatException e) {
+            checkMessage(e);
+        }
+        try {
+            Parser.parse(new String(data, StandardCharsets.UTF_8), "fuzz.txt", new ArrayList<>());
+        } catch (SceneFormatException e) {
+            checkMessage(e);
+        }
+    }
+
+    static void checkMessage(SceneFormatException e) {
+        String m = e.getMessage();
+        if (e.line() < 1 || !m.startsWith("fuzz.txt:" + e.line() + ": ") || m.chars().anyMatch(c -> c < 0x20 || c == 0x7f)) {
+            throw new AssertionError("malformed message: " + m);
+        }
+        if (m.length() > 2000) {
+            throw new AssertionError("message of " + m.length() + " characters: " + m.substring(0, 200));
+        }
+    }
+}
