@@ -24,7 +24,7 @@ class ParserFuzzTest {
         "int", "double", "String", "ref", "Vector3d", "eye", "target", "up", "yFOV", "aspect", "center", "radius",
         "material", "v0", "v1", "v2", "ambientColor", "diffuseColor", "specularColor", "exponent", "base",
         "mirrorCoefficient", "position", "intensity", "[", "]", "#", "NaN", "Infinity", "1e999", "-0", "2147483648",
-        "FieldZooSurface", "label", "big", "small", "boxed"})
+        "FieldZooSurface", "EvilNotASurface", "InitFlagSurface", "label", "big", "small", "boxed"})
     @FuzzTest(maxDuration = "60s")
     void parseOnlyThrowsSceneFormatException(byte[] data) {
         ParserInvariant.check(data);

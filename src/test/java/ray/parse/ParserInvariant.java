@@ -9,7 +9,14 @@ final class ParserInvariant {
     private ParserInvariant() {
     }
 
-    /** Parses {@code data} as bytes and as text; anything but success or a one-line located SceneFormatException escapes. */
+    /** Set by the static initialiser of the default-package test class EvilNotASurface, which no scene may run. */
+    static final String EVIL_RAN = "raytracer.test.EvilNotASurface.initialised";
+
+    /**
+     * Parses {@code data} as bytes and as text; anything but success or a one-line located
+     * SceneFormatException escapes, and so does an AssertionError if the parse initialised a class that
+     * is not a scene class.
+     */
     static void check(byte[] data) {
         try {
             Parser.parse(data, "fuzz.txt", new ArrayList<>());
@@ -20,6 +27,9 @@ final class ParserInvariant {
             Parser.parse(new String(data, StandardCharsets.UTF_8), "fuzz.txt", new ArrayList<>());
         } catch (SceneFormatException e) {
             checkMessage(e);
+        }
+        if (System.getProperty(EVIL_RAN) != null) {
+            throw new AssertionError("the scene ran the static initialiser of EvilNotASurface, which is not a scene class");
         }
     }
 
