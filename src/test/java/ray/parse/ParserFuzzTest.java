@@ -12,7 +12,7 @@ import org.junit.jupiter.api.Timeout;
  *
  * <p>{@code gradle test} runs it in regression mode: once on each file of
  * {@code src/test/resources/ray/parse/ParserFuzzTestInputs/parseOnlyThrowsSceneFormatException/} (the
- * seed corpus; the build adds {@code scenes/*.txt}). {@code gradle fuzz -PfuzzSeconds=60} fuzzes; a
+ * seed corpus; the build adds every {@code scenes/*.txt} up to 64 KB). {@code gradle fuzz -PfuzzSeconds=60} fuzzes; a
  * crashing input lands in that directory as {@code crash-<sha1>}: rename it to say what it tests,
  * fix the parser, and commit it as a regression input.
  */
