@@ -116,6 +116,9 @@ public final class Main implements Callable<Integer> {
         } catch (SceneFormatException e) {
             err.println(e.getMessage());
             return false;
+        } catch (RuntimeException e) {            // a parser bug: still one line, no stack trace
+            err.println(oneLine(scenePath + ": internal error while reading the scene: " + describe(e) + " (please report it)"));
+            return false;
         }
         warnings.forEach(err::println);
         long t1 = System.nanoTime();
@@ -131,8 +134,8 @@ public final class Main implements Callable<Integer> {
         } catch (OutOfMemoryError e) {
             err.println(scenePath + ": out of memory while rendering (raise the heap, e.g. JAVA_OPTS=-Xmx16g)");
             return false;
-        } catch (IllegalArgumentException | IllegalStateException e) {
-            err.println(scenePath + ": " + e.getMessage());
+        } catch (RuntimeException | StackOverflowError e) {   // e.g. a user's own material failing
+            err.println(oneLine(scenePath + ": rendering failed: " + describe(e)));
             return false;
         } catch (RuntimeException e) {
             // a bug in the scene's own classes (a student's material, say): report it, go on to the next scene
@@ -150,7 +153,7 @@ public final class Main implements Callable<Integer> {
         try {
             PngWriter.write(image, png);
         } catch (java.io.IOException | RuntimeException e) {
-            err.println(png + ": cannot write the image (" + (e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage()) + ")");
+            err.println(oneLine(png + ": cannot write the image (" + (e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage()) + ")"));
             return false;
         }
         long t3 = System.nanoTime();
@@ -166,6 +169,16 @@ public final class Main implements Callable<Integer> {
             err.println(scenePath + ": warning: " + renderer.stats().invalidSamples + " samples were NaN or infinite and were left black");
         }
         return true;
+    }
+
+    private static String describe(Throwable e) {
+        return (e instanceof IllegalArgumentException || e instanceof IllegalStateException) && e.getMessage() != null
+                ? e.getMessage() : e.getClass().getSimpleName() + (e.getMessage() == null ? "" : " (" + e.getMessage() + ")");
+    }
+
+    /** Keeps an error report on one line whatever an exception's message holds. */
+    static String oneLine(String s) {
+        return s.replaceAll("[\\p{Cntrl}\u2028\u2029]+", " ");
     }
 
     static final class Version implements CommandLine.IVersionProvider {

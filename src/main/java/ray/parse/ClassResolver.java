@@ -2,6 +2,9 @@ package ray.parse;
 
 import java.lang.reflect.Constructor;
 import java.lang.reflect.Modifier;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
 import java.util.Map;
 import ray.Camera;
 import ray.light.Light;
@@ -26,6 +29,8 @@ final class ClassResolver {
     private static final String[] PACKAGES = {"ray.surface.", "ray.material.", "ray.light.", "ray."};
 
     private final ClassLoader loader;
+    /** Classes already resolved in this file, by header type and name: a failed lookup costs an exception. */
+    private final Map<String, Class<?>> resolved = new HashMap<>();
 
     ClassResolver(ClassLoader loader) {
         this.loader = loader;
@@ -33,38 +38,74 @@ final class ClassResolver {
 
     /** The class for {@code name} under header {@code type}; a message for the user on failure. */
     Class<?> resolve(String type, String name) throws Problem {
+        String key = type + " " + name;
+        Class<?> c = resolved.get(key);
+        if (c == null) {
+            c = lookUp(type, name);
+            resolved.put(key, c);
+        }
+        return c;
+    }
+
+    private Class<?> lookUp(String type, String name) throws Problem {
         Class<?> base = BASES.get(type);
-        if (!name.matches("[A-Za-z_$][A-Za-z0-9_$]*(\\.[A-Za-z_$][A-Za-z0-9_$]*)*")) {
-            throw new Problem("'" + name + "' is not a class name (expected a " + type + " class such as "
-                    + example(type) + ")");
+        String expected = " (expected " + builtIns(type) + " or a " + type + " class of your own)";
+        if (!isClassName(name)) {
+            throw new Problem(Values.quote(name) + " is not a class name" + expected);
         }
         String canonical = ALIASES.getOrDefault(name, name);
         Class<?> c = find(canonical);
         if (c == null) {
-            throw new Problem("unknown " + type + " class '" + name + "' (built-in: " + builtIns(type)
-                    + "; or a class of your own on the class path)");
+            List<String> known = new ArrayList<>(List.of(builtIns(type).replace(" (or ", ", ").replace(")", "").split(", ")));
+            String hint = Values.caseHint(name, known);
+            throw new Problem("unknown " + type + " class " + Values.quote(name) + " (" + hint + "expected " + builtIns(type)
+                    + " or a " + type + " class of your own on the class path)");
         }
+        // everything up to here only loaded the class; nothing of it has run
         if (!base.isAssignableFrom(c)) {
             String what = kindOf(c);
-            throw new Problem("'" + name + "' is " + (what == null ? "not a " + type : "a " + what + ", not a " + type)
-                    + " (expected a " + type + " class such as " + example(type) + ")");
+            throw new Problem(Values.quote(name) + " is " + (what == null ? "not a " + type : "a " + what + ", not a " + type) + expected);
         }
         if (c.isInterface() || Modifier.isAbstract(c.getModifiers())) {
-            throw new Problem("'" + name + "' is abstract and cannot be created (expected a concrete " + type
-                    + " class such as " + example(type) + ")");
+            throw new Problem(Values.quote(name) + " is abstract and cannot be created" + expected);
         }
         if (!Modifier.isPublic(c.getModifiers())) {
-            throw new Problem("class '" + name + "' is not public (scene classes must be public with a public no-argument constructor)");
+            throw new Problem("class " + Values.quote(name) + " is not public (expected a public class with a public no-argument constructor)");
         }
         try {
             Constructor<?> k = c.getConstructor();
             if (!Modifier.isPublic(k.getModifiers())) {
                 throw new NoSuchMethodException();
             }
-        } catch (NoSuchMethodException | LinkageError e) {
-            throw new Problem("class '" + name + "' has no public no-argument constructor");
+        } catch (NoSuchMethodException | LinkageError | RuntimeException e) {
+            throw new Problem("class " + Values.quote(name) + " has no public no-argument constructor (expected one, as scene objects are created empty)");
         }
         return c;
+    }
+
+    /** A Java class name, simple or qualified: identifiers separated by single dots, not absurdly long. */
+    static boolean isClassName(String name) {
+        if (name.isEmpty() || name.length() > 200) {
+            return false;
+        }
+        boolean start = true;
+        for (int i = 0; i < name.length(); i++) {
+            char c = name.charAt(i);
+            if (c == '.') {
+                if (start) {
+                    return false;
+                }
+                start = true;
+            } else if (start ? Character.isJavaIdentifierStart(c) : Character.isJavaIdentifierPart(c)) {
+                if (Character.isIdentifierIgnorable(c)) {
+                    return false;
+                }
+                start = false;
+            } else {
+                return false;
+            }
+        }
+        return !start;
     }
 
     private Class<?> find(String name) {
@@ -81,7 +122,7 @@ final class ClassResolver {
     private Class<?> load(String qualified) {
         try {
             return Class.forName(qualified, false, loader);   // never initialised here
-        } catch (ClassNotFoundException | LinkageError e) {
+        } catch (ClassNotFoundException | LinkageError | RuntimeException e) {
             return null;
         }
     }
@@ -101,19 +142,6 @@ final class ClassResolver {
             case "Surface": return "Sphere, Triangle";
             case "Material": return "Diffuse, BlinnPhong, GlazedMaterial (or Glazed)";
             default: return "PointLight";
-        }
-    }
-
-    private static String example(String type) {
-        return builtIns(type).split(",")[0];
-    }
-
-    /** A user-facing message, turned into a located {@link SceneFormatException} by the parser. */
-    static final class Problem extends Exception {
-        private static final long serialVersionUID = 1L;
-
-        Problem(String message) {
-            super(message, null, false, false);
         }
     }
 }

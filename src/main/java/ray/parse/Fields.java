@@ -6,70 +6,98 @@ import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import javax.vecmath.Tuple3d;
 
 /**
  * The settable fields of scene classes: non-private, non-static, non-final fields found by exact name
- * up the superclass chain. Looked up once per (class, name) and cached.
+ * up the superclass chain, and the type keyword ({@code int}, {@code double}, {@code String},
+ * {@code Vector3d}, {@code ref}) each one takes. Looked up once per (class, name) and cached.
  */
 final class Fields {
 
     private final Map<Class<?>, Map<String, Field>> cache = new HashMap<>();
 
-    Field find(Class<?> c, String name) throws ClassResolver.Problem {
+    Field find(Class<?> c, String name) throws Problem {
         Map<String, Field> byName = cache.computeIfAbsent(c, k -> new HashMap<>());
         Field f = byName.get(name);
         if (f != null) {
             return f;
         }
+        String owner = c.getSimpleName();
         for (Class<?> k = c; k != null && k != Object.class; k = k.getSuperclass()) {
             Field d;
             try {
                 d = k.getDeclaredField(name);
             } catch (NoSuchFieldException e) {
                 continue;
-            } catch (LinkageError | SecurityException e) {
+            } catch (LinkageError | RuntimeException e) {
                 break;
             }
             int m = d.getModifiers();
-            if (Modifier.isPrivate(m)) {
-                throw new ClassResolver.Problem("field '" + name + "' of " + c.getSimpleName()
-                        + " is private and cannot be set (settable: " + settable(c) + ")");
-            }
-            if (Modifier.isStatic(m)) {
-                throw new ClassResolver.Problem("field '" + name + "' of " + c.getSimpleName()
-                        + " is static and cannot be set from a scene (settable: " + settable(c) + ")");
-            }
-            if (Modifier.isFinal(m)) {
-                throw new ClassResolver.Problem("field '" + name + "' of " + c.getSimpleName()
-                        + " is final and cannot be set (settable: " + settable(c) + ")");
+            String why = Modifier.isPrivate(m) ? "private" : Modifier.isStatic(m) ? "static" : Modifier.isFinal(m) ? "final"
+                    : d.isSynthetic() ? "synthetic" : null;
+            if (why != null) {
+                throw new Problem("field " + Values.quote(name) + " of " + owner + " is " + why
+                        + " and cannot be set from a scene (expected one of: " + settable(c) + ")");
             }
             try {
                 d.setAccessible(true);
             } catch (RuntimeException e) {
-                throw new ClassResolver.Problem("field '" + name + "' of " + c.getSimpleName() + " cannot be accessed");
+                throw new Problem("field " + Values.quote(name) + " of " + owner + " cannot be accessed (" + e.getClass().getSimpleName() + ")");
             }
             byName.put(name, d);
             return d;
         }
-        throw new ClassResolver.Problem(c.getSimpleName() + " has no field '" + name + "' (settable: " + settable(c) + ")");
+        List<String> names = settableNames(c);
+        throw new Problem(owner + " has no field " + Values.quote(name) + " (" + Values.caseHint(name, names) + "expected one of: "
+                + (names.isEmpty() ? "none" : String.join(", ", names)) + ")");
     }
 
     /** The names a scene may set on {@code c}, for error messages. */
     static String settable(Class<?> c) {
+        List<String> names = settableNames(c);
+        return names.isEmpty() ? "none" : String.join(", ", names);
+    }
+
+    static List<String> settableNames(Class<?> c) {
         List<String> names = new ArrayList<>();
         for (Class<?> k = c; k != null && k != Object.class; k = k.getSuperclass()) {
             try {
                 for (Field f : k.getDeclaredFields()) {
                     int m = f.getModifiers();
                     if (!Modifier.isPrivate(m) && !Modifier.isStatic(m) && !Modifier.isFinal(m) && !f.isSynthetic()
-                            && !names.contains(f.getName())) {
+                            && keyword(f.getType()) != null && !names.contains(f.getName())) {
                         names.add(f.getName());
                     }
                 }
-            } catch (LinkageError | SecurityException e) {
+            } catch (LinkageError | RuntimeException e) {
                 break;
             }
         }
-        return names.isEmpty() ? "none" : String.join(", ", names);
+        return names;
+    }
+
+    /** The type keyword a field of type {@code t} takes, or null when a scene cannot set such a field. */
+    static String keyword(Class<?> t) {
+        if (t == int.class || t == Integer.class || t == long.class || t == Long.class) return "int";
+        if (t == double.class || t == Double.class || t == float.class || t == Float.class) return "double";
+        if (t == String.class) return "String";
+        if (t == javax.vecmath.Vector3d.class || t == Tuple3d.class) return "Vector3d";
+        if (t.isPrimitive() || t.isArray() || Number.class.isAssignableFrom(t) || t == Boolean.class || t == Character.class
+                || Tuple3d.class.isAssignableFrom(t) || CharSequence.class.isAssignableFrom(t)) {
+            return null;
+        }
+        return "ref";
+    }
+
+    /** How a value of keyword {@code k} is written, for "expected" messages. */
+    static String placeholder(String k) {
+        switch (k) {
+            case "int": return "<whole number>";
+            case "double": return "<number>";
+            case "String": return "<text>";
+            case "Vector3d": return "[x y z]";
+            default: return "<name>";
+        }
     }
 }

@@ -1,9 +1,10 @@
 package ray.parse;
 
 /**
- * The largest settings the parser accepts, so that an absurd scene is refused before anything is
- * allocated. The image size limit follows the JVM's heap: raise it with {@code -Xmx} (for the
- * launcher: {@code JAVA_OPTS=-Xmx16g raytracer big.txt}).
+ * The largest settings the parser accepts, so that an absurd scene is refused with a message before
+ * anything is allocated (see {@code docs/bad-input.md}). The image-size limit follows the JVM's heap:
+ * raise it with {@code -Xmx}, for the launcher {@code JAVA_OPTS=-Xmx16g raytracer big.txt} (or
+ * {@code RAYTRACER_OPTS}). The other limits are constants here; change them and rebuild.
  */
 public final class Limits {
 
@@ -15,14 +16,21 @@ public final class Limits {
     public static final int MAX_DEPTH = 1000;
     /** Bytes the renderer needs per pixel: linear RGB doubles, the 8-bit image and the PNG encoder's copy. */
     public static final long BYTES_PER_PIXEL = 24 + 4 + 4;
-    /** Longest line a scene file may have. */
+    /** Most pixels one image can have whatever the heap: its RGB doubles live in one Java array. */
+    public static final long MAX_ARRAY_PIXELS = (Integer.MAX_VALUE - 8) / 3;
+    /** Longest line a scene file may have, in characters. */
     public static final int MAX_LINE = 1 << 16;
 
     private Limits() {
     }
 
-    /** The most pixels an image may have in this JVM: half the heap it may use. */
+    /** The most pixels an image may have in this JVM: half the heap it may use, and what one array can index. */
     public static long maxPixels() {
+        return Math.min(heapPixels(), MAX_ARRAY_PIXELS);
+    }
+
+    /** The most pixels half of this JVM's maximum heap can hold. */
+    static long heapPixels() {
         return Runtime.getRuntime().maxMemory() / 2 / BYTES_PER_PIXEL;
     }
 }

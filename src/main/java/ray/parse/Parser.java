@@ -1,22 +1,17 @@
 package ray.parse;
 
 import java.io.IOException;
+import java.io.InputStream;
 import java.lang.reflect.Field;
 import java.lang.reflect.InvocationTargetException;
-import java.nio.ByteBuffer;
-import java.nio.charset.CharacterCodingException;
-import java.nio.charset.CodingErrorAction;
-import java.nio.charset.StandardCharsets;
+import java.nio.file.AccessDeniedException;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
-import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
-import java.util.Set;
-import javax.vecmath.Vector3d;
 import ray.Camera;
 import ray.Scene;
 import ray.SceneObject;
@@ -25,22 +20,26 @@ import ray.material.Material;
 import ray.surface.Surface;
 
 /**
- * Reads the scene format ({@code docs/scene-format.md}): object headers
- * {@code <ObjectType> <ClassName> [name]}, parameter lines {@code <type> <field> <value>} written
- * straight into the object's field, a blank line ending an object, global settings and {@code #}
- * comments. Every mistake is a {@link SceneFormatException} naming the file and line; nothing else
- * escapes. One parser reads one file; its state (the named objects) lives in the instance.
+ * Reads the scene format ({@code scene-format.md}): object headers {@code <ObjectType> <ClassName> [name]},
+ * parameter lines {@code <type> <field> <value>} written straight into the object's field, a blank line
+ * ending an object, global settings and {@code #} comments. Every mistake is a
+ * {@link SceneFormatException} naming the file and line, what was found and what was expected;
+ * nothing else escapes (docs/bad-input.md lists them). One parser reads one file; its state (the
+ * named objects) lives in the instance.
  */
 public final class Parser {
 
-    private static final Set<String> GLOBALS = Set.of("BGColor", "AmbientLight", "Width", "Height", "AASamples", "MaxDepth");
-    private static final Set<String> TYPES = Set.of("int", "double", "String", "ref", "Vector3d");
+    static final List<String> GLOBALS = List.of("BGColor", "AmbientLight", "Width", "Height", "AASamples", "MaxDepth");
+    static final List<String> TYPES = List.of("int", "double", "String", "ref", "Vector3d");
+    private static final List<String> KEYWORDS = List.of("Camera", "Surface", "Material", "Light",
+            "BGColor", "AmbientLight", "Width", "Height", "AASamples", "MaxDepth", "int", "double", "String", "ref", "Vector3d");
 
     private final String file;
-    private final ClassResolver resolver = new ClassResolver(Parser.class.getClassLoader());
+    private final ClassResolver resolver;
     private final Fields fields = new Fields();
     private final Scene scene = new Scene();
     private final Map<String, Object> named = new HashMap<>();
+    private final Map<String, Integer> namedLines = new HashMap<>();
     private final Map<String, Integer> globalLines = new HashMap<>();
     private final List<String> warnings = new ArrayList<>();
 
@@ -48,15 +47,17 @@ public final class Parser {
     private Object current;
     private String currentType;
     private int currentLine;
-    private final Set<String> currentFields = new HashSet<>();
+    private int blankAfter;            // the blank line that ended it (0: still open)
+    private final Map<String, Integer> currentFields = new HashMap<>();
     private int cameraLine;
     private int degenerate;
     private int firstDegenerateLine;
 
     private int line;
 
-    private Parser(String file) {
+    private Parser(String file, ClassLoader loader) {
         this.file = file;
+        this.resolver = new ClassResolver(loader);
     }
 
     /** Reads and parses {@code path}; the file is named in messages as given. */
@@ -67,90 +68,71 @@ public final class Parser {
     /** As {@link #parse(Path)}, adding warnings (e.g. zero-area triangles) as {@code file:line: warning: ...}. */
     public static Scene parse(Path path, List<String> warnings) throws SceneFormatException {
         String name = path.toString();
-        byte[] bytes;
-        try {
-            if (Files.isDirectory(path)) {
-                throw new SceneFormatException(name, 0, "is a directory, not a scene file");
-            }
-            bytes = Files.readAllBytes(path);
-        } catch (NoSuchFileException e) {
-            throw new SceneFormatException(name, 0, "no such file");
-        } catch (IOException | OutOfMemoryError | SecurityException e) {
-            throw new SceneFormatException(name, 0, "cannot be read (" + e.getClass().getSimpleName()
-                    + (e.getMessage() == null ? "" : ": " + e.getMessage()) + ")");
+        if (Files.isDirectory(path)) {
+            throw new SceneFormatException(name, 0, "cannot read the scene: it is a directory (expected a scene file)");
         }
-        return parse(bytes, name, warnings);
+        Parser p = new Parser(name, Parser.class.getClassLoader());
+        try (InputStream in = Files.newInputStream(path)) {
+            return p.run(Lines.of(in, name), warnings);
+        } catch (NoSuchFileException e) {
+            throw new SceneFormatException(name, 0, "cannot read the scene: no such file");
+        } catch (AccessDeniedException e) {
+            throw new SceneFormatException(name, 0, "cannot read the scene: permission denied");
+        } catch (IOException | SecurityException e) {
+            throw new SceneFormatException(name, p.line, "cannot read the scene: " + (e.getMessage() == null
+                    ? e.getClass().getSimpleName() : e.getMessage()));
+        } catch (OutOfMemoryError e) {
+            throw new SceneFormatException(name, p.line, "the scene is too large for this JVM's heap (expected fewer objects, "
+                    + "or raise the heap with -Xmx, e.g. JAVA_OPTS=-Xmx16g)");
+        }
     }
 
     /** Parses a scene file's bytes (UTF-8 text); {@code name} is used in messages. */
     public static Scene parse(byte[] bytes, String name, List<String> warnings) throws SceneFormatException {
-        for (int i = 0; i < bytes.length; i++) {
-            if (bytes[i] == 0) {
-                throw new SceneFormatException(name, lineOf(bytes, i), "binary data (a NUL byte) in what should be a text scene file");
-            }
-        }
-        String text;
+        Parser p = new Parser(name, Parser.class.getClassLoader());
         try {
-            text = StandardCharsets.UTF_8.newDecoder().onMalformedInput(CodingErrorAction.REPORT)
-                    .onUnmappableCharacter(CodingErrorAction.REPORT).decode(ByteBuffer.wrap(bytes)).toString();
-        } catch (CharacterCodingException e) {
-            throw new SceneFormatException(name, 1, "not UTF-8 text (is this a scene file?)");
+            return p.run(Lines.of(new java.io.ByteArrayInputStream(bytes), name), warnings);
+        } catch (IOException e) {
+            throw new AssertionError(e);     // a byte array cannot fail to read
         }
-        return parse(text, name, warnings);
     }
 
     /** Parses scene text; {@code name} is used in messages. */
     public static Scene parse(String text, String name, List<String> warnings) throws SceneFormatException {
-        Parser p = new Parser(name);
+        return parse(text, name, warnings, Parser.class.getClassLoader());
+    }
+
+    /** As {@link #parse(String, String, List)}, finding the scene's classes through {@code loader}. */
+    static Scene parse(String text, String name, List<String> warnings, ClassLoader loader) throws SceneFormatException {
         try {
-            Scene s = p.run(text);
-            warnings.addAll(p.warnings);
-            return s;
-        } catch (StackOverflowError | OutOfMemoryError e) {
-            throw new SceneFormatException(name, p.line, "scene too large or too deeply nested to read ("
-                    + e.getClass().getSimpleName() + ")");
+            return new Parser(name, loader).run(Lines.of(text, name), warnings);
+        } catch (IOException e) {
+            throw new AssertionError(e);     // text cannot fail to read
         }
     }
 
-    private static int lineOf(byte[] b, int end) {
-        int n = 1;
-        for (int i = 0; i < end; i++) {
-            if (b[i] == '\n') {
-                n++;
-            }
-        }
-        return n;
-    }
-
-    private Scene run(String text) throws SceneFormatException {
-        int pos = 0, len = text.length();
+    private Scene run(Lines lines, List<String> warningsOut) throws SceneFormatException, IOException {
         boolean any = false;
-        while (pos < len || (pos == len && line == 0)) {
-            int end = text.indexOf('\n', pos);
-            if (end < 0) {
-                end = len;
-            }
-            line++;
-            if (end - pos > Limits.MAX_LINE) {
-                throw error("line is " + (end - pos) + " characters long (at most " + Limits.MAX_LINE + " expected)");
-            }
-            String raw = text.substring(pos, end);
-            pos = end + 1;
+        for (String raw = lines.next(); raw != null; raw = lines.next()) {
+            line = lines.line();
             String s = stripComment(raw).strip();
             if (s.isEmpty()) {
-                if (raw.strip().isEmpty()) {
-                    endObject();          // a blank line ends the object; a comment line does not
+                if (raw.isBlank() && current != null && blankAfter == 0) {
+                    blankAfter = line;        // a blank line ends the object; a comment line does not
                 }
                 continue;
             }
             any = true;
             statement(s);
         }
+        line = Math.max(1, lines.line());
         endObject();
         if (!any) {
-            throw new SceneFormatException(file, Math.max(1, line), "empty scene file (expected Width, Height and a Camera at least)");
+            throw error("empty scene file (expected at least Width, Height and a Camera)");
         }
-        return finish();
+        Scene s = finish();
+        warningsOut.addAll(warnings);
+        return s;
     }
 
     /** Drops a comment: a '#' at the start of the line or after whitespace. */
@@ -163,148 +145,107 @@ public final class Parser {
         return s;
     }
 
+    /** At most three words: the first two, and the rest of the line. {@code s} is stripped and not empty. */
+    static String[] words(String s) {
+        String[] out = new String[3];
+        int n = 0, i = 0, len = s.length();
+        while (n < 2) {
+            int start = i;
+            while (i < len && !Character.isWhitespace(s.charAt(i))) i++;
+            out[n++] = s.substring(start, i);
+            while (i < len && Character.isWhitespace(s.charAt(i))) i++;
+            if (i == len) {
+                return java.util.Arrays.copyOf(out, n);
+            }
+        }
+        out[2] = s.substring(i);
+        return out;
+    }
+
     private void statement(String s) throws SceneFormatException {
-        String[] tok = s.split("\\s+", 3);
-        String head = tok[0];
-        if (current != null && TYPES.contains(head)) {
-            parameter(tok, s);
-        } else if (ClassResolver.BASES.containsKey(head)) {
-            endObject();   // a header right after an object also ends it
-            header(tok);
+        String[] w = words(s);
+        String head = w[0];
+        boolean inObject = current != null && blankAfter == 0;
+        if (TYPES.contains(head)) {
+            if (current == null) {
+                throw error("parameter line outside an object (expected an object header such as 'Surface Sphere' above it, with no blank line between)");
+            }
+            if (!inObject) {
+                throw error("parameter line outside an object: the blank line at line " + blankAfter + " ended the " + currentType + " "
+                        + current.getClass().getSimpleName() + " of line " + currentLine + " (expected no blank line inside an object)");
+            }
+            new Parameters(this).parameter(w);
+            return;
+        }
+        if (inObject && !ClassResolver.BASES.containsKey(head) && !GLOBALS.contains(head)) {
+            if (Fields.settableNames(current.getClass()).contains(head)) {
+                throw error(Values.quote(s) + " has no type (expected " + Values.quote(keywordOf(head) + " " + s) + ")");
+            }
+            throw error("unknown parameter type " + Values.quote(head) + " (" + Values.caseHint(head, KEYWORDS)
+                    + "expected int, double, String, ref or Vector3d, or a new object header)");
+        }
+        endObject();
+        if (ClassResolver.BASES.containsKey(head)) {
+            header(w, s);
         } else if (GLOBALS.contains(head)) {
-            endObject();
-            global(head, s.substring(head.length()).strip());
-        } else if (TYPES.contains(head)) {
-            throw error("parameter line outside an object (expected an object header such as 'Surface Sphere' above it, with no blank line between)");
-        } else if (current != null) {
-            throw error("unknown parameter type '" + head + "' (expected int, double, String, ref or Vector3d)");
+            global(head, w.length > 1 ? s.substring(head.length()).strip() : "");
         } else {
-            throw error("unknown keyword '" + head + "' (expected Camera, Surface, Material, Light or a global: "
-                    + "BGColor, AmbientLight, Width, Height, AASamples, MaxDepth)");
+            throw error("unknown keyword " + Values.quote(head) + " (" + Values.caseHint(head, KEYWORDS)
+                    + "expected Camera, Surface, Material, Light or a global: " + String.join(", ", GLOBALS) + ")");
+        }
+    }
+
+    private String keywordOf(String fieldName) {
+        try {
+            return Fields.keyword(fields.find(current.getClass(), fieldName).getType());
+        } catch (Problem p) {
+            return "<type>";
         }
     }
 
     // ---- objects ----
 
-    private void header(String[] tok) throws SceneFormatException {
-        String type = tok[0];
-        if (tok.length < 2) {
-            throw error("'" + type + "' needs a class name (expected '" + type + " <ClassName> [name]', e.g. '"
-                    + type + " " + ClassResolver.builtIns(type).split(",")[0] + "')");
+    private void header(String[] w, String s) throws SceneFormatException {
+        String type = w[0];
+        String form = "'" + type + " <ClassName> [name]'";
+        if (w.length < 2) {
+            throw error("'" + type + "' needs a class name (expected " + form + ", e.g. '" + type + " "
+                    + ClassResolver.builtIns(type).split(",")[0] + "')");
         }
-        String[] rest = tok.length == 3 ? tok[2].split("\\s+") : new String[0];
-        if (rest.length > 1) {
-            throw error("too many words in the header (expected '" + type + " <ClassName> [name]')");
+        if (w.length == 3 && words(w[2]).length > 1) {
+            throw error("too many words in " + Values.quote(s) + " (expected " + form + ")");
         }
         Class<?> c;
         try {
-            c = resolver.resolve(type, tok[1]);
-        } catch (ClassResolver.Problem p) {
+            c = resolver.resolve(type, w[1]);
+        } catch (Problem p) {
             throw error(p.getMessage());
         }
-        String name = rest.length == 1 ? rest[0] : null;
+        String name = w.length == 3 ? w[2] : null;
         if (name != null && named.containsKey(name)) {
-            throw error("the name '" + name + "' is already used by an earlier object (names must be unique in a file)");
+            throw error("the name " + Values.quote(name) + " is already used by the " + named.get(name).getClass().getSimpleName()
+                    + " at line " + namedLines.get(name) + " (expected a name used once in the file)");
         }
         Object o;
         try {
             o = c.getConstructor().newInstance();
         } catch (InvocationTargetException e) {
-            throw error("creating " + tok[1] + " failed: " + describe(e.getCause()));
+            throw error("creating " + w[1] + " failed: " + describe(e.getCause()));
         } catch (ReflectiveOperationException | RuntimeException | LinkageError e) {
-            throw error("creating " + tok[1] + " failed: " + describe(e));
+            throw error("creating " + w[1] + " failed: " + describe(e));
         }
         current = o;
         currentType = type;
         currentLine = line;
+        blankAfter = 0;
         currentFields.clear();
         if (name != null) {
             named.put(name, o);
+            namedLines.put(name, line);
         }
     }
 
-    private void parameter(String[] tok, String s) throws SceneFormatException {
-        String type = tok[0];
-        if (tok.length < 3) {
-            throw error("incomplete parameter line (expected '" + type + " <field> <value>')");
-        }
-        String fieldName = tok[1], value = tok[2].strip();
-        Field f;
-        try {
-            f = fields.find(current.getClass(), fieldName);
-        } catch (ClassResolver.Problem p) {
-            throw error(p.getMessage());
-        }
-        if (!currentFields.add(fieldName)) {
-            throw error("field '" + fieldName + "' is set twice in this object");
-        }
-        Class<?> ft = f.getType();
-        Object v;
-        switch (type) {
-            case "int":
-                requireFieldType(ft == int.class || ft == Integer.class || ft == long.class || ft == Long.class, type, f);
-                int iv = parseInt(value, fieldName);
-                v = (ft == long.class || ft == Long.class) ? (Object) (long) iv : (Object) iv;
-                break;
-            case "double":
-                requireFieldType(ft == double.class || ft == Double.class || ft == float.class || ft == Float.class, type, f);
-                double dv = parseDouble(value, fieldName);
-                v = (ft == float.class || ft == Float.class) ? (Object) (float) dv : (Object) dv;
-                break;
-            case "String":
-                requireFieldType(ft == String.class, type, f);
-                v = value;
-                break;
-            case "Vector3d":
-                requireFieldType(ft.isAssignableFrom(Vector3d.class), type, f);
-                v = parseVector(value, fieldName);
-                break;
-            default:   // ref
-                requireFieldType(!ft.isPrimitive() && ft != String.class, type, f);
-                if (value.split("\\s+").length > 1) {
-                    throw error("'ref " + fieldName + "' takes one object name, got '" + value + "'");
-                }
-                Object target = named.get(value);
-                if (target == null) {
-                    throw error("undefined object '" + value + "' (expected the name of an object declared earlier in the file"
-                            + (named.isEmpty() ? "; none has a name yet)" : ", such as " + someNames() + ")"));
-                }
-                if (!ft.isInstance(target)) {
-                    throw error("'" + value + "' is a " + target.getClass().getSimpleName() + ", but field '" + fieldName
-                            + "' needs a " + ft.getSimpleName());
-                }
-                v = target;
-        }
-        try {
-            f.set(current, v);
-        } catch (IllegalAccessException | RuntimeException e) {
-            throw error("cannot set field '" + fieldName + "': " + describe(e));
-        }
-    }
-
-    private void requireFieldType(boolean ok, String type, Field f) throws SceneFormatException {
-        if (!ok) {
-            throw error("field '" + f.getName() + "' of " + current.getClass().getSimpleName() + " is a "
-                    + f.getType().getSimpleName() + ", not " + ("ref".equals(type) ? "an object reference" : type)
-                    + " (expected '" + keywordFor(f.getType()) + " " + f.getName() + " ...')");
-        }
-    }
-
-    private static String keywordFor(Class<?> t) {
-        if (t == int.class || t == Integer.class || t == long.class || t == Long.class) return "int";
-        if (t == double.class || t == Double.class || t == float.class || t == Float.class) return "double";
-        if (t == String.class) return "String";
-        if (t.isAssignableFrom(Vector3d.class)) return "Vector3d";
-        return "ref";
-    }
-
-    private String someNames() {
-        List<String> names = new ArrayList<>(named.keySet());
-        names.sort(null);
-        return names.size() <= 6 ? String.join(", ", names) : String.join(", ", names.subList(0, 6)) + ", ...";
-    }
-
-    /** Ends the current object: validates it (init) and adds it to the scene. */
+    /** Ends the current object: validates it (init) and adds it to the scene. Problems are reported at its header. */
     private void endObject() throws SceneFormatException {
         if (current == null) {
             return;
@@ -313,17 +254,18 @@ public final class Parser {
         current = null;
         int saved = line;
         line = currentLine;
+        String cls = o.getClass().getSimpleName();
         try {
             ((SceneObject) o).init();
         } catch (IllegalArgumentException | IllegalStateException e) {
-            throw error(currentType + " " + o.getClass().getSimpleName() + ": " + e.getMessage());
-        } catch (RuntimeException | LinkageError e) {
-            throw error(o.getClass().getSimpleName() + ".init() failed: " + describe(e));
+            throw error(currentType + " " + cls + ": " + e.getMessage());
+        } catch (RuntimeException | LinkageError | AssertionError | StackOverflowError e) {
+            throw error(cls + ".init() failed: " + describe(e));
         }
         switch (currentType) {
             case "Camera":
                 if (scene.camera != null) {
-                    throw error("a second camera (the first is at line " + cameraLine + "; a scene has one)");
+                    throw error("a second camera (first at line " + cameraLine + "; expected one camera per scene)");
                 }
                 scene.camera = (Camera) o;
                 cameraLine = line;
@@ -331,9 +273,15 @@ public final class Parser {
             case "Surface":
                 Surface s = (Surface) o;
                 if (s.material == null) {
-                    throw error(o.getClass().getSimpleName() + " has no material (expected 'ref material <name>')");
+                    throw error(cls + " has no material (expected 'ref material <name>' in the object)");
                 }
-                if (s.isDegenerate() && degenerate++ == 0) {
+                boolean flat;
+                try {
+                    flat = s.isDegenerate();
+                } catch (RuntimeException | LinkageError e) {
+                    throw error(cls + ".isDegenerate() failed: " + describe(e));
+                }
+                if (flat && degenerate++ == 0) {
                     firstDegenerateLine = line;
                 }
                 scene.surfaces.add(s);
@@ -350,57 +298,59 @@ public final class Parser {
     // ---- globals ----
 
     private void global(String key, String value) throws SceneFormatException {
+        boolean vector = key.equals("BGColor") || key.equals("AmbientLight");
         Integer first = globalLines.put(key, line);
         if (first != null) {
-            throw error(key + " is set twice (first at line " + first + ")");
+            throw error(key + " is set twice (first at line " + first + "; expected each setting once)");
         }
         if (value.isEmpty()) {
-            throw error(key + " needs a value");
+            throw error("'" + key + "' needs a value (expected '" + key + " " + (vector ? "[r g b]" : key.equals("AASamples") ? "<n>"
+                    : key.equals("MaxDepth") ? "<bounces>" : "<pixels>") + "')");
         }
-        switch (key) {
-            case "BGColor":
-                scene.backgroundColor = parseVector(value, key);
-                break;
-            case "AmbientLight":
-                scene.ambientLight = parseVector(value, key);
-                break;
-            case "Width":
-                scene.width = parseRange(value, key, 1, Limits.MAX_SIDE);
-                break;
-            case "Height":
-                scene.height = parseRange(value, key, 1, Limits.MAX_SIDE);
-                break;
-            case "AASamples":
-                scene.samplesPerPixel = parseRange(value, key, 1, Limits.MAX_AA_SAMPLES);
-                break;
-            default:
-                scene.maxDepth = parseRange(value, key, 0, Limits.MAX_DEPTH);
+        try {
+            switch (key) {
+                case "BGColor" -> scene.backgroundColor = Values.parseVector(value, key);
+                case "AmbientLight" -> scene.ambientLight = Values.parseVector(value, key);
+                case "Width" -> scene.width = range(value, key, 1, Limits.MAX_SIDE);
+                case "Height" -> scene.height = range(value, key, 1, Limits.MAX_SIDE);
+                case "AASamples" -> scene.samplesPerPixel = range(value, key, 1, Limits.MAX_AA_SAMPLES);
+                default -> scene.maxDepth = range(value, key, 0, Limits.MAX_DEPTH);
+            }
+        } catch (Problem p) {
+            throw error(p.getMessage());
         }
     }
 
-    private int parseRange(String value, String key, int min, int max) throws SceneFormatException {
-        int v = parseInt(value, key);
-        if (v < min || v > max) {
-            throw error(key + " " + v + " is out of range (expected " + min + " to " + max + ")");
+    private static int range(String value, String key, int min, int max) throws Problem {
+        String expected = " (expected " + min + " to " + max + ")";
+        if (!Values.isWhole(value)) {
+            throw new Problem(Values.quote(value) + " is not a whole number for " + key + expected);
         }
-        return v;
+        Long v = Values.wholeValue(value);
+        if (v == null || v < min || v > max) {
+            throw new Problem(Values.quote(key + " " + value) + " is out of range" + expected);
+        }
+        return (int) (long) v;
     }
 
     private Scene finish() throws SceneFormatException {
-        int last = Math.max(1, line);
-        if (!globalLines.containsKey("Width") || !globalLines.containsKey("Height")) {
-            throw new SceneFormatException(file, last, "no " + (globalLines.containsKey("Width") ? "Height" : "Width")
-                    + " (expected 'Width <pixels>' and 'Height <pixels>' lines)");
+        for (String side : new String[] {"Width", "Height"}) {
+            if (!globalLines.containsKey(side)) {
+                throw error("no " + side + " (expected '" + side + " <pixels>', e.g. '" + side + (side.equals("Width") ? " 640')" : " 480')"));
+            }
         }
         if (scene.camera == null) {
-            throw new SceneFormatException(file, last, "no camera (expected a 'Camera Camera' object)");
+            throw error("no camera (expected a 'Camera Camera' object)");
         }
         long pixels = (long) scene.width * scene.height;
         if (pixels > Limits.maxPixels()) {
-            throw new SceneFormatException(file, globalLines.get("Width"), String.format(
-                    "Width x Height = %,d pixels needs about %,d MiB, more than this JVM allows (at most %,d pixels; "
-                            + "raise the heap with -Xmx, e.g. JAVA_OPTS=-Xmx16g)",
-                    pixels, pixels * Limits.BYTES_PER_PIXEL >> 20, Limits.maxPixels()));
+            line = globalLines.get("Width");
+            String why = Limits.maxPixels() < Limits.heapPixels()
+                    ? String.format("at most %,d pixels, the most one image array holds", Limits.MAX_ARRAY_PIXELS)
+                    : String.format("at most %,d pixels, half of this JVM's %,d MiB heap at %d bytes a pixel; raise the heap with -Xmx, "
+                            + "e.g. JAVA_OPTS=-Xmx16g", Limits.maxPixels(), Runtime.getRuntime().maxMemory() >> 20, Limits.BYTES_PER_PIXEL);
+            throw error(String.format("Width %d x Height %d = %,d pixels would need about %,d MiB (expected %s)",
+                    scene.width, scene.height, pixels, pixels * Limits.BYTES_PER_PIXEL >> 20, why));
         }
         if (Double.isNaN(scene.camera.aspect)) {
             scene.camera.aspect = (double) scene.width / scene.height;
@@ -413,78 +363,33 @@ public final class Parser {
         return scene;
     }
 
-    // ---- values ----
+    // ---- shared with Parameters ----
 
-    private int parseInt(String s, String what) throws SceneFormatException {
-        if (!s.matches("[+-]?[0-9]+")) {
-            throw error("'" + s + "' is not an integer (expected a whole number for " + what + ")");
-        }
-        try {
-            return Integer.parseInt(s.startsWith("+") ? s.substring(1) : s);
-        } catch (NumberFormatException e) {
-            throw error("integer '" + s + "' is out of range for " + what);
-        }
+    Object current() {
+        return current;
     }
 
-    private double parseDouble(String s, String what) throws SceneFormatException {
-        if (!isDecimal(s)) {
-            throw error("'" + s + "' is not a number (expected a decimal number such as 1.5 or -2e3 for " + what + ")");
-        }
-        double d = Double.parseDouble(s);
-        if (!Double.isFinite(d)) {
-            throw error("number '" + s + "' is too large (expected a finite number for " + what + ")");
-        }
-        return d;
+    Fields fields() {
+        return fields;
     }
 
-    /** [+-] digits [. digits] [e [+-] digits], or starting with the point; no NaN, Infinity, hex or suffix. */
-    static boolean isDecimal(String s) {
-        int i = 0, n = s.length();
-        if (i < n && (s.charAt(i) == '+' || s.charAt(i) == '-')) i++;
-        int digits = 0;
-        while (i < n && Character.isDigit(s.charAt(i)) && s.charAt(i) < 128) { i++; digits++; }
-        if (i < n && s.charAt(i) == '.') {
-            i++;
-            while (i < n && Character.isDigit(s.charAt(i)) && s.charAt(i) < 128) { i++; digits++; }
-        }
-        if (digits == 0) return false;
-        if (i < n && (s.charAt(i) == 'e' || s.charAt(i) == 'E')) {
-            i++;
-            if (i < n && (s.charAt(i) == '+' || s.charAt(i) == '-')) i++;
-            int e = 0;
-            while (i < n && Character.isDigit(s.charAt(i)) && s.charAt(i) < 128) { i++; e++; }
-            if (e == 0) return false;
-        }
-        return i == n;
+    Map<String, Integer> currentFields() {
+        return currentFields;
     }
 
-    private Vector3d parseVector(String s, String what) throws SceneFormatException {
-        String expected = " (expected [x y z] with three numbers for " + what + ")";
-        if (!s.startsWith("[") || !s.endsWith("]") || s.length() < 2) {
-            throw error("malformed vector '" + s + "'" + expected);
-        }
-        String[] parts = s.substring(1, s.length() - 1).strip().split("[\\s,]+");
-        if (parts.length != 3 || parts[0].isEmpty()) {
-            throw error("malformed vector '" + s + "': " + (parts[0].isEmpty() ? 0 : parts.length) + " numbers" + expected);
-        }
-        double[] v = new double[3];
-        for (int i = 0; i < 3; i++) {
-            if (!isDecimal(parts[i])) {
-                throw error("malformed vector '" + s + "': '" + parts[i] + "' is not a number" + expected);
-            }
-            v[i] = Double.parseDouble(parts[i]);
-            if (!Double.isFinite(v[i])) {
-                throw error("vector '" + s + "' has a number too large" + expected);
-            }
-        }
-        return new Vector3d(v[0], v[1], v[2]);
+    Map<String, Object> named() {
+        return named;
     }
 
-    private SceneFormatException error(String message) {
+    int line() {
+        return line;
+    }
+
+    SceneFormatException error(String message) {
         return new SceneFormatException(file, line, message);
     }
 
-    private static String describe(Throwable e) {
+    static String describe(Throwable e) {
         return e.getClass().getSimpleName() + (e.getMessage() == null ? "" : " (" + e.getMessage() + ")");
     }
 }

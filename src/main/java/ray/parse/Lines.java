@@ -1,0 +1,218 @@
+package ray.parse;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.ByteBuffer;
+import java.nio.CharBuffer;
+import java.nio.charset.CharsetDecoder;
+import java.nio.charset.CoderResult;
+import java.nio.charset.CodingErrorAction;
+import java.nio.charset.StandardCharsets;
+
+/**
+ * The lines of a scene file, from text or from a stream of UTF-8 bytes, checked before any costly
+ * work: at most {@link Limits#MAX_LINE} characters a line (a longer line is refused without reading
+ * the rest of it), no NUL or other control characters (binary data), valid UTF-8. Lines end at
+ * {@code \n}, {@code \r\n} or {@code \r}; a leading byte-order mark is dropped. A stream is read as
+ * it is parsed, so an endless or huge input costs at most one line of memory.
+ */
+final class Lines {
+
+    /** How far the start of the input is searched for a NUL byte, the mark of a binary file (as git and grep do). */
+    static final int BINARY_SNIFF = 8000;
+
+    private final String file;
+    // text source
+    private final String text;
+    private int pos;
+    // byte source
+    private final InputStream in;
+    private final byte[] buf;
+    private int bufPos, bufLen;
+    private boolean eof;
+    private byte[] lineBytes;
+    private CharsetDecoder utf8;
+
+    private int line;
+
+    private Lines(String file, String text, InputStream in) {
+        this.file = file;
+        this.text = text;
+        this.in = in;
+        this.buf = in == null ? null : new byte[1 << 16];
+    }
+
+    static Lines of(String text, String file) throws SceneFormatException {
+        Lines l = new Lines(file, text, null);
+        int nul = text.substring(0, Math.min(text.length(), BINARY_SNIFF)).indexOf('\0');
+        if (nul >= 0) {
+            throw l.binary(lineAt(text, nul), 0);
+        }
+        if (text.startsWith("\ufeff")) {
+            l.pos = 1;
+        }
+        return l;
+    }
+
+    static Lines of(InputStream in, String file) throws SceneFormatException, IOException {
+        Lines l = new Lines(file, null, in);
+        l.lineBytes = new byte[256];
+        l.utf8 = StandardCharsets.UTF_8.newDecoder().onMalformedInput(CodingErrorAction.REPORT)
+                .onUnmappableCharacter(CodingErrorAction.REPORT);
+        while (!l.eof && l.bufLen < BINARY_SNIFF) {
+            l.fill();
+        }
+        if (l.bufLen >= 2 && ((l.buf[0] == (byte) 0xFF && l.buf[1] == (byte) 0xFE) || (l.buf[0] == (byte) 0xFE && l.buf[1] == (byte) 0xFF))) {
+            throw new SceneFormatException(file, 1, "UTF-16 text (expected UTF-8: save the file as UTF-8)");
+        }
+        for (int i = 0; i < Math.min(l.bufLen, BINARY_SNIFF); i++) {
+            if (l.buf[i] == 0) {
+                throw l.binary(lineAt(new String(l.buf, 0, i, StandardCharsets.ISO_8859_1), i), 0);
+            }
+        }
+        if (l.bufLen >= 3 && l.buf[0] == (byte) 0xEF && l.buf[1] == (byte) 0xBB && l.buf[2] == (byte) 0xBF) {
+            l.bufPos = 3;
+        }
+        return l;
+    }
+
+    /** Number of the line last returned by {@link #next()} (0 before the first). */
+    int line() {
+        return line;
+    }
+
+    /** The next line without its terminator, or null at the end of the input. */
+    String next() throws SceneFormatException, IOException {
+        return text != null ? nextFromText() : nextFromBytes();
+    }
+
+    private String nextFromText() throws SceneFormatException {
+        int n = text.length();
+        if (pos >= n) {
+            return null;
+        }
+        line++;
+        int start = pos, i = pos;
+        while (i < n) {
+            char c = text.charAt(i);
+            if (c == '\n' || c == '\r') {
+                break;
+            }
+            if (i - start >= Limits.MAX_LINE) {
+                throw tooLong();
+            }
+            if (control(c)) {
+                throw c == 0 ? binary(line, 0) : controlCharacter(c);
+            }
+            i++;
+        }
+        String s = text.substring(start, i);
+        pos = i < n && text.charAt(i) == '\r' && i + 1 < n && text.charAt(i + 1) == '\n' ? i + 2 : i + 1;
+        return s;
+    }
+
+    private String nextFromBytes() throws SceneFormatException, IOException {
+        if (bufPos >= bufLen && !fill()) {
+            return null;
+        }
+        line++;
+        int len = 0;
+        while (true) {
+            if (bufPos >= bufLen && !fill()) {
+                break;
+            }
+            byte b = buf[bufPos++];
+            if (b == '\n') {
+                break;
+            }
+            if (b == '\r') {
+                if (bufPos < bufLen || fill()) {
+                    if (buf[bufPos] == '\n') {
+                        bufPos++;
+                    }
+                }
+                break;
+            }
+            if (b >= 0 && control((char) b)) {
+                throw b == 0 ? binary(line, b) : controlCharacter((char) b);
+            }
+            if (len == lineBytes.length) {
+                if (len >= 3 * Limits.MAX_LINE) {    // a char is at most 3 bytes: already too long
+                    throw tooLong();
+                }
+                lineBytes = java.util.Arrays.copyOf(lineBytes, Math.min(2 * len, 3 * Limits.MAX_LINE + 1));
+            }
+            lineBytes[len++] = b;
+        }
+        String s = decode(len);
+        if (s.length() > Limits.MAX_LINE) {
+            throw tooLong();
+        }
+        return s;
+    }
+
+    private String decode(int len) throws SceneFormatException {
+        ByteBuffer bytes = ByteBuffer.wrap(lineBytes, 0, len);
+        CharBuffer chars = CharBuffer.allocate(len);
+        utf8.reset();
+        CoderResult r = utf8.decode(bytes, chars, true);
+        if (!r.isError()) {
+            r = utf8.flush(chars);
+        }
+        if (r.isError()) {
+            int bad = lineBytes[bytes.position()] & 0xff;
+            throw new SceneFormatException(file, line, String.format("not UTF-8 text (byte 0x%02X); expected a text scene file saved as UTF-8", bad));
+        }
+        chars.flip();
+        return chars.toString();
+    }
+
+    private boolean fill() throws IOException {
+        if (eof) {
+            return false;
+        }
+        if (bufPos > 0 && bufPos >= bufLen) {
+            bufPos = 0;
+            bufLen = 0;
+        }
+        if (bufLen == buf.length) {        // only while sniffing, with bufPos == 0
+            return true;
+        }
+        int n = in.read(buf, bufLen, buf.length - bufLen);
+        if (n < 0) {
+            eof = true;
+            return bufPos < bufLen;
+        }
+        bufLen += n;
+        return true;
+    }
+
+    /** C0 control characters other than tab, form feed and vertical tab (line ends are handled by the caller). */
+    private static boolean control(char c) {
+        return (c < 0x20 && c != '\t' && c != '\f' && c != 0x0b) || c == 0x7f;
+    }
+
+    private static int lineAt(String s, int index) {
+        int n = 1;
+        for (int i = 0; i < index; i++) {
+            char c = s.charAt(i);
+            if (c == '\n' || (c == '\r' && (i + 1 >= s.length() || s.charAt(i + 1) != '\n'))) {
+                n++;
+            }
+        }
+        return n;
+    }
+
+    private SceneFormatException binary(int at, int b) {
+        return new SceneFormatException(file, at, String.format("binary data (byte 0x%02X), expected a text scene file", b & 0xff));
+    }
+
+    private SceneFormatException controlCharacter(char c) {
+        return new SceneFormatException(file, line, String.format("control character U+%04X in the text (expected a text scene file)", (int) c));
+    }
+
+    private SceneFormatException tooLong() {
+        return new SceneFormatException(file, line, String.format("line is longer than %,d characters (expected at most %,d; is this a scene file?)",
+                Limits.MAX_LINE, Limits.MAX_LINE));
+    }
+}
