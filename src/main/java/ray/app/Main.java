@@ -135,14 +135,8 @@ public final class Main implements Callable<Integer> {
             err.println(scenePath + ": out of memory while rendering (raise the heap, e.g. JAVA_OPTS=-Xmx16g)");
             return false;
         } catch (RuntimeException | StackOverflowError e) {   // e.g. a user's own material failing
-            err.println(oneLine(scenePath + ": rendering failed: " + describe(e)));
-            return false;
-        } catch (RuntimeException e) {
-            // a bug in the scene's own classes (a student's material, say): report it, go on to the next scene
-            StackTraceElement[] where = e.getStackTrace();
-            err.println(scenePath + ": rendering failed: " + e.getClass().getSimpleName()
-                    + (e.getMessage() == null ? "" : " (" + e.getMessage() + ")")
-                    + (where.length == 0 ? "" : " at " + where[0]));
+            StackTraceElement[] where = e.getStackTrace();      // point at the failing method
+            err.println(oneLine(scenePath + ": rendering failed: " + describe(e) + (where.length == 0 ? "" : " at " + where[0])));
             return false;
         } finally {
             if (progress != null) {
