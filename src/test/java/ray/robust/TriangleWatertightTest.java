@@ -1,0 +1,329 @@
+package ray.robust;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assertions.fail;
+import static ray.robust.RobustSupport.add;
+import static ray.robust.RobustSupport.forEachSeed;
+import static ray.robust.RobustSupport.logUniform;
+import static ray.robust.RobustSupport.maxAbs;
+import static ray.robust.RobustSupport.sub;
+import static ray.robust.RobustSupport.unit;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Random;
+import javax.vecmath.Vector3d;
+import org.junit.jupiter.api.Test;
+import ray.IntersectionRecord;
+import ray.Ray;
+import ray.Scene;
+import ray.parse.Parser;
+import ray.surface.Triangle;
+
+/**
+ * Watertightness of the ray/triangle test (Woop, Benthin and Wald 2013): a ray through a shared edge
+ * or vertex of a closed mesh hits one of the triangles there, at every scale and position; zero-area
+ * triangles are never hit; rays in a triangle's plane miss it.
+ */
+class TriangleWatertightTest {
+
+    private static final int CASES = 24;
+
+    /** A mesh kind per case: sphere-like (irrational vertices), box grid (coplanar, axis-aligned), ellipsoid. */
+    private static ClosedMesh randomMesh(Random r) {
+        double s = logUniform(r, 1e-6, 1e6);
+        Vector3d t = unit(r);
+        t.scale(s * logUniform(r, 1e-3, 1e6));          // up to a million mesh sizes from the origin
+        switch (r.nextInt(3)) {
+            case 0:
+                return ClosedMesh.icosphere(2).transformed(s, new Vector3d(1, 1, 1), t);
+            case 1:
+                return ClosedMesh.cubeGrid(5).transformed(s, new Vector3d(1, 1, 1), t);
+            default:
+                Vector3d k = new Vector3d(logUniform(r, 0.1, 10), logUniform(r, 0.1, 10), logUniform(r, 0.1, 10));
+                return ClosedMesh.icosphere(2).transformed(s, k, t);
+        }
+    }
+
+    /**
+     * Trap: a non-watertight test (Moller-Trumbore's u >= 0, v >= 0, u + v <= 1 computed separately per
+     * triangle) lets rays through exact shared vertices and edges slip between both triangles, which
+     * shows as pinholes of background along a mesh's edges. Rays are aimed at every vertex, every edge
+     * midpoint and a random point on every edge, from a random direction entering the mesh there.
+     */
+    @Test
+    void raysThroughSharedEdgesAndVerticesOfClosedMeshAlwaysHit() {
+        int[] totals = new int[2];
+        forEachSeed(0x7a7e47L, CASES, r -> {
+            ClosedMesh m = randomMesh(r);
+            List<Triangle> tris = m.triangles();
+            Scene scene = RobustSupport.scene(tris);
+            List<List<Integer>> around = m.facesAroundVertices();
+            List<String> slips = new ArrayList<>();
+            int rays = 0;
+            for (int v = 0; v < m.vertices.size(); v++) {
+                shoot(r, m, tris, scene, m.vertices.get(v), around.get(v), "vertex " + v, slips);
+                rays++;
+            }
+            for (int[] e : m.edges()) {
+                Vector3d a = m.vertices.get(e[0]), b = m.vertices.get(e[1]);
+                List<Integer> faces = List.of(e[2], e[3]);
+                Vector3d mid = new Vector3d((a.x + b.x) / 2, (a.y + b.y) / 2, (a.z + b.z) / 2);
+                shoot(r, m, tris, scene, mid, faces, "midpoint of edge " + e[0] + "-" + e[1], slips);
+                double l = r.nextDouble();
+                shoot(r, m, tris, scene, add(a, l, sub(b, a)), faces, "point " + l + " along edge " + e[0] + "-" + e[1], slips);
+                rays += 2;
+            }
+            totals[0] += rays;
+            totals[1] += slips.size();
+            if (!slips.isEmpty()) {
+                fail(slips.size() + " of " + rays + " rays slipped through the mesh; first: " + slips.get(0));
+            }
+        });
+        assertTrue(totals[0] > 20000, "too few rays tested: " + totals[0]);
+    }
+
+    /**
+     * Shoots a ray at {@code p} from outside, along a direction that enters the mesh through every face in
+     * {@code faces}; the closest hit (brute force and BVH) must exist and be at p.
+     */
+    private static void shoot(Random r, ClosedMesh m, List<Triangle> tris, Scene scene, Vector3d p, List<Integer> faces,
+                              String what, List<String> slips) {
+        Vector3d e = entering(r, m, faces);
+        double size = Math.max(maxAbs(sub(m.vertices.get(0), m.vertices.get(m.vertices.size() / 2))), Double.MIN_NORMAL);
+        Vector3d o = add(p, size * logUniform(r, 1e-3, 1e3), e);
+        Vector3d d = sub(p, o);
+        d.scale(logUniform(r, 1e-3, 1e3));
+        Ray ray = new Ray(o, d);
+        ray.tMin = 0;
+        IntersectionRecord best = null;
+        for (Triangle t : tris) {
+            IntersectionRecord rec = new IntersectionRecord();
+            Ray q = new Ray(o, d);
+            q.tMin = 0;
+            q.tMax = best == null ? Double.POSITIVE_INFINITY : best.t;
+            if (t.intersects(q, rec, scene)) {
+                best = rec;
+            }
+        }
+        IntersectionRecord bvh = new IntersectionRecord();
+        boolean bvhHit = scene.intersect(ray, bvh);
+        if (best == null || !bvhHit) {
+            slips.add(what + " " + p + (best == null ? " (brute force missed)" : "") + (bvhHit ? "" : " (BVH missed)") + ", " + ray);
+            return;
+        }
+        double tol = 1e3 * RobustSupport.EPS * (maxAbs(o) + maxAbs(p));
+        double off = maxAbs(sub(best.location, p));
+        if (off > tol) {
+            slips.add(what + ": hit " + off + " away from the aimed point (tolerance " + tol + ") at " + best.location + ", " + ray);
+        }
+        assertEquals(best.t, bvh.t, 1e-12 * best.t, "BVH and brute force disagree on t for " + what + ", " + ray);
+    }
+
+    /** A unit direction pointing out of every face in {@code faces} (by at least 0.05 in cosine). */
+    private static Vector3d entering(Random r, ClosedMesh m, List<Integer> faces) {
+        Vector3d mean = new Vector3d();
+        for (int f : faces) {
+            mean.add(m.faceNormal(f));
+        }
+        mean.normalize();
+        for (int attempt = 0; attempt < 50; attempt++) {
+            Vector3d e = unit(r);
+            e.scaleAdd(1.5, mean, e);
+            e.normalize();
+            boolean ok = true;
+            for (int f : faces) {
+                ok &= e.dot(m.faceNormal(f)) > 0.05;
+            }
+            if (ok) {
+                return e;
+            }
+        }
+        return mean;
+    }
+
+    /** Sanity check of the generator the other tests rely on: closed, outward-wound meshes. */
+    @Test
+    void generatedMeshesAreClosedAndWoundOutward() {
+        for (ClosedMesh m : List.of(ClosedMesh.icosphere(2), ClosedMesh.cubeGrid(5))) {
+            for (int[] e : m.edges()) {
+                assertTrue(e[3] >= 0, "edge " + e[0] + "-" + e[1] + " has one face: the mesh is open");
+            }
+            for (int f = 0; f < m.faces.size(); f++) {
+                Vector3d c = new Vector3d();
+                for (int v : m.faces.get(f)) {
+                    c.add(m.vertices.get(v));
+                }
+                assertTrue(m.faceNormal(f).dot(c) > 0, "face " + f + " is wound inward");
+            }
+            assertEquals(2, m.vertices.size() - m.edges().size() + m.faces.size(), "Euler characteristic of a sphere");
+        }
+    }
+
+    /**
+     * Trap: the slab test or the triangle set-up dividing by a zero direction component. Rays exactly
+     * along an axis (two direction components +0.0 or -0.0) down onto every grid vertex of a box, those
+     * on the box's edges included (where the side faces lie exactly in the ray's plane), must hit.
+     */
+    @Test
+    void axisParallelRaysOntoGridVerticesHit() {
+        forEachSeed(0xa415L, 8, r -> {
+            double s = Math.scalb(1.0, r.nextInt(41) - 20) * (r.nextBoolean() ? 1 : 3);
+            Vector3d t = new Vector3d(r.nextInt(2001) - 1000, r.nextInt(2001) - 1000, r.nextInt(2001) - 1000);
+            t.scale(s * logUniform(r, 1, 1e3));
+            ClosedMesh m = ClosedMesh.cubeGrid(4).transformed(s, new Vector3d(1, 1, 1), t);
+            List<Triangle> tris = m.triangles();
+            Scene scene = RobustSupport.scene(tris);
+            int misses = 0, rays = 0;
+            String first = null;
+            for (Vector3d p : m.vertices) {
+                for (int axis = 0; axis < 3; axis++) {
+                    for (int sign = -1; sign <= 1; sign += 2) {
+                        double[] dir = {0, 0, 0};
+                        dir[axis] = -sign * logUniform(r, 1e-3, 1e3);
+                        // only vertices on the face the ray comes down on (its coordinate on that side)
+                        double pc = axis == 0 ? p.x : axis == 1 ? p.y : p.z;
+                        double centre = axis == 0 ? t.x : axis == 1 ? t.y : t.z;
+                        if (sign * (pc - centre) <= 0) {
+                            continue;
+                        }
+                        Vector3d o = new Vector3d(p);
+                        double lift = 4 * s;
+                        if (axis == 0) o.x += sign * lift; else if (axis == 1) o.y += sign * lift; else o.z += sign * lift;
+                        // -0.0 in the zero components half the time
+                        double z = r.nextBoolean() ? 0.0 : -0.0;
+                        Vector3d d = new Vector3d(dir[0] == 0 ? z : dir[0], dir[1] == 0 ? z : dir[1], dir[2] == 0 ? z : dir[2]);
+                        Ray ray = new Ray(o, d);
+                        ray.tMin = 0;
+                        IntersectionRecord rec = new IntersectionRecord();
+                        rays++;
+                        if (!scene.intersect(ray, rec)) {
+                            misses++;
+                            if (first == null) {
+                                first = "vertex " + p + ", " + ray;
+                            }
+                        }
+                    }
+                }
+            }
+            assertEquals(0, misses, misses + " of " + rays + " axis-parallel rays missed the box; first: " + first);
+        });
+    }
+
+    /**
+     * Trap: a zero-area triangle producing hits (NaN normal, division by zero) or casting shadows. A
+     * repeated vertex and exactly collinear vertices (integers times 2^k), at any scale: rays aimed at
+     * their vertices and midpoints never hit them, directly or through the BVH.
+     */
+    @Test
+    void zeroAreaTrianglesAreNeverHit() {
+        forEachSeed(0xde9L, 200, r -> {
+            double k = Math.scalb(1.0, r.nextInt(41) - 20);
+            Vector3d a = ints(r, 1000), e = ints(r, 50);
+            a.scale(k);
+            e.scale(k);
+            Vector3d b = add(a, 1, e);
+            Vector3d c = r.nextBoolean() ? new Vector3d(b) : add(a, -3, e);
+            Triangle tri = RobustSupport.triangle(a, b, c);
+            assertTrue(tri.isDegenerate(), "not recognised as zero-area: " + tri);
+            Scene scene = RobustSupport.scene(List.of(tri));
+            for (Vector3d p : new Vector3d[] {a, b, c, add(a, 0.5, sub(c, a)), add(a, 0.5, sub(b, a))}) {
+                Vector3d o = add(p, k * logUniform(r, 1e-3, 1e3), unit(r));
+                Ray ray = new Ray(o, sub(p, o));
+                ray.tMin = 0;
+                IntersectionRecord rec = new IntersectionRecord();
+                assertFalse(tri.intersects(ray, rec, scene), "zero-area triangle hit: " + tri + " by " + ray);
+                assertFalse(scene.intersect(ray, rec), "zero-area triangle hit through the BVH: " + tri + " by " + ray);
+                assertFalse(scene.occluded(ray), "zero-area triangle casts a shadow: " + tri);
+            }
+        });
+    }
+
+    /**
+     * Trap: a needle (three vertices collinear before rounding, so a sliver of area ~ulp after it) that is
+     * not zero-area giving a NaN normal or a hit point off the triangle. Any hit must be finite, with a
+     * unit normal, inside the triangle's box.
+     */
+    @Test
+    void needleTrianglesGiveFiniteHitsOrMisses() {
+        forEachSeed(0x9eed1eL, 500, r -> {
+            double s = logUniform(r, 1e-6, 1e6);
+            Vector3d a = unit(r), e = unit(r);
+            a.scale(s * logUniform(r, 1e-3, 1e6));
+            e.scale(s);
+            Triangle tri = RobustSupport.triangle(a, add(a, 1, e), add(a, 2, e));
+            for (int i = 0; i < 8; i++) {
+                Vector3d p = add(a, 2 * r.nextDouble(), e);
+                Vector3d o = add(p, s * logUniform(r, 1e-3, 1e3), unit(r));
+                Ray ray = new Ray(o, sub(p, o));
+                ray.tMin = 0;
+                IntersectionRecord rec = new IntersectionRecord();
+                if (tri.intersects(ray, rec, null)) {
+                    assertTrue(Double.isFinite(rec.t) && Double.isFinite(maxAbs(rec.location)), "non-finite hit " + rec);
+                    assertEquals(1, rec.normal.length(), 1e-12, "normal not unit: " + rec);
+                    double slack = 1e-12 * (maxAbs(a) + s);
+                    javax.vecmath.Vector3d lo = new Vector3d(), hi = new Vector3d();
+                    lo.set(tri.bounds().minX - slack, tri.bounds().minY - slack, tri.bounds().minZ - slack);
+                    hi.set(tri.bounds().maxX + slack, tri.bounds().maxY + slack, tri.bounds().maxZ + slack);
+                    Vector3d q = rec.location;
+                    assertTrue(q.x >= lo.x && q.y >= lo.y && q.z >= lo.z && q.x <= hi.x && q.y <= hi.y && q.z <= hi.z,
+                            "hit outside the needle's box: " + rec + " for " + tri);
+                }
+            }
+        });
+    }
+
+    /** Trap: one warning per zero-area triangle flooding the console, or none at all. */
+    @Test
+    void zeroAreaTrianglesAreReportedOnceAtLoad() throws Exception {
+        StringBuilder sb = new StringBuilder("Width 8\nHeight 6\n\nCamera Camera\n\nMaterial Diffuse m\n\n");
+        sb.append("Surface Triangle\nVector3d v0 [0 0 0]\nVector3d v1 [1 0 0]\nVector3d v2 [0 1 0]\nref material m\n\n");
+        for (int i = 0; i < 3; i++) {    // the first zero-area triangle's header is line 14
+            sb.append("Surface Triangle\nVector3d v0 [1 1 1]\nVector3d v1 [2 2 2]\nVector3d v2 [3 3 3]\nref material m\n\n");
+        }
+        List<String> warnings = new ArrayList<>();
+        Scene s = Parser.parse(sb.toString(), "deg.txt", warnings);
+        assertEquals(1, warnings.size(), "expected one warning, got " + warnings);
+        assertTrue(warnings.get(0).startsWith("deg.txt:14:"), warnings.get(0));
+        assertTrue(warnings.get(0).contains("and 2 more"), warnings.get(0));
+        assertEquals(4, s.surfaces.size());
+    }
+
+    /**
+     * Trap: a ray lying in the triangle's plane being reported as a hit (the edge functions are all 0,
+     * the determinant 0: a division by zero gives an arbitrary t). Integer coordinates times a power of
+     * two keep the ray exactly in the plane at every scale; it runs through the triangle's interior.
+     */
+    @Test
+    void raysInTheTrianglePlaneMiss() {
+        forEachSeed(0x9a7a11e1L, 2000, r -> {
+            double s = Math.scalb(1.0, r.nextInt(81) - 40);
+            Vector3d v0 = ints(r, 1000), e = ints(r, 64), f = ints(r, 64);
+            Vector3d v1 = add(v0, 1, e), v2 = add(v0, 1, f);
+            Vector3d n = new Vector3d();
+            n.cross(e, f);
+            if (n.lengthSquared() == 0) {
+                return;
+            }
+            // origin outside the triangle in its plane, v0 - a (e + f); the ray along e + f crosses v0 and the interior
+            int a = 1 + r.nextInt(4);
+            Vector3d o = add(add(v0, -a, e), -a, f);
+            Vector3d d = add(new Vector3d(e), 1, f);
+            d.scale(1 + r.nextInt(5));
+            for (Vector3d v : new Vector3d[] {v0, v1, v2, o}) {
+                v.scale(s);
+            }
+            d.scale(s);
+            Triangle tri = RobustSupport.triangle(v0, v1, v2);
+            Ray ray = new Ray(o, d);
+            ray.tMin = 0;
+            assertFalse(tri.intersects(ray, new IntersectionRecord(), null), "ray in the plane of " + tri + " hit it: " + ray);
+        });
+    }
+
+    private static Vector3d ints(Random r, int n) {
+        return new Vector3d(r.nextInt(2 * n + 1) - n, r.nextInt(2 * n + 1) - n, r.nextInt(2 * n + 1) - n);
+    }
+}
