@@ -17,7 +17,8 @@ import ray.render.Image;
 /**
  * No shadow acne on a large flat floor lit at a grazing angle (n.l about 0.02), the classic worst case
  * for self-intersection: the floor is either a sphere of radius 1e4 (flat at this view) or two triangles
- * 2e3 across, at scales 1e-4 to 1e4 and moved a million scene units away. Nothing else is in the scene,
+ * 2e3 across, at scales 1e-4 to 1e4 and moved a million scene units away (and, as the property tests'
+ * range, at 1e-6 and at 1e6 moved 1e12 away). Nothing else is in the scene,
  * so no point of the floor is in shadow: every floor pixel must be exactly the unshadowed
  * {@code k_a I_a + k_d (I / r^2) max(0, n.l)} of scene-format.md, evaluated here at the camera ray's hit.
  */
@@ -58,7 +59,8 @@ class NoAcneTest {
      */
     @ParameterizedTest(name = "{0} floor, scale {1}, translation {2}")
     @CsvSource({"sphere, 1e-4, 0", "sphere, 1, 0", "sphere, 1e4, 0", "sphere, 1e-4, 100", "sphere, 1, 1e6", "sphere, 1e4, 1e10",
-        "triangles, 1e-4, 0", "triangles, 1, 0", "triangles, 1e4, 0", "triangles, 1, 1e6", "triangles, 1e4, 1e10"})
+        "sphere, 1e-6, 0", "sphere, 1e6, 1e12",
+        "triangles, 1e-4, 0", "triangles, 1, 0", "triangles, 1e4, 0", "triangles, 1, 1e6", "triangles, 1e4, 1e10", "triangles, 1e6, 1e12"})
     void grazingLightOnLargeFloorHasNoAcne(String floor, double s, double t) {
         Scene scene = RobustSupport.parse(scene(floor, s, t), "floor.txt");
         Image img = RobustSupport.render(scene);

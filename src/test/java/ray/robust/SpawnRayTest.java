@@ -161,14 +161,15 @@ class SpawnRayTest {
      * Trap: a light sitting exactly on a surface (a lamp on a wall, a light at a sphere's top) being
      * shadowed by that surface, because the shadow ray reaches the surface at t = 1 up to rounding. The
      * scene format says the surface does not shadow it. Lights at a point of a sphere or a triangle
-     * (rounded, so maybe an ulp inside), seen from points that face them at angles from 1e-3 to 1.
+     * (rounded, so maybe an ulp inside) up to a million sizes from the origin, seen from 1e-5 to 1e2
+     * sizes away at angles from 1e-3 to 1 (in cosine) to the surface.
      */
     @Test
     void surfaceALightSitsOnDoesNotShadowIt() {
         forEachSeed(0x119e7L, 20000, r -> {
             double s = logUniform(r, 1e-6, 1e6);
             Vector3d c = unit(r);
-            c.scale(s * logUniform(r, 1e-3, 1e3));
+            c.scale(s * logUniform(r, 1e-3, 1e6));
             Surface on;
             Vector3d light, n;
             if (r.nextBoolean()) {
@@ -191,13 +192,14 @@ class SpawnRayTest {
             }
             // a shading point on a small sphere that sees the light from the front of `on`
             Vector3d dir = atAngle(r, n, logUniform(r, 1e-3, 1));
-            Vector3d p = add(light, s * logUniform(r, 1e-2, 1e2), dir);
-            Sphere viewer = RobustSupport.sphere(p, s * 1e-3);
+            double dist = s * logUniform(r, 1e-5, 1e2);
+            Vector3d p = add(light, dist, dir);
+            Sphere viewer = RobustSupport.sphere(p, dist * 1e-3);
             Scene scene = RobustSupport.scene(List.of(on, viewer));
             // hit the viewer sphere on the side facing the light
             Vector3d toLight = sub(light, p);
             toLight.normalize();
-            Vector3d from = add(p, s * 2e-3, toLight);
+            Vector3d from = add(p, dist * 2e-3, toLight);
             Ray ray = new Ray(from, sub(p, from));
             ray.tMin = 0;
             IntersectionRecord rec = new IntersectionRecord();
