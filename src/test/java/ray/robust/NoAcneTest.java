@@ -16,8 +16,9 @@ import ray.render.Image;
 
 /**
  * No shadow acne on a large flat floor lit at a grazing angle (n.l about 0.02), the classic worst case
- * for self-intersection: the floor is either a sphere of radius 1e4 (flat at this view) or two triangles
- * 2e3 across, at scales 1e-4 to 1e4 and moved a million scene units away (and, as the property tests'
+ * for self-intersection: the floor is a sphere of radius 1e4 (flat at this view), two triangles 2e3
+ * across, or those triangles back to back with copies wound the other way (a two-sided floor: coincident
+ * surfaces, where a shadow ray leaving the top must not hit the downward-facing copy), at scales 1e-4 to 1e4 and moved a million scene units away (and, as the property tests'
  * range, at 1e-6 and at 1e6 moved 1e12 away). Nothing else is in the scene,
  * so no point of the floor is in shadow: every floor pixel must be exactly the unshadowed
  * {@code k_a I_a + k_d (I / r^2) max(0, n.l)} of scene-format.md, evaluated here at the camera ray's hit.
@@ -37,6 +38,15 @@ class NoAcneTest {
                     .append(num(r * s)).append("\nref material floorMat\n\n");
         } else {
             double e = 1e3;
+            if (floor.equals("two-sided")) {
+                // the same two triangles wound the other way: a floor seen from below too, back to back
+                b.append("Surface Triangle\nVector3d v0 ").append(vec(-e * s + t, t, -e * s + t)).append("\nVector3d v1 ")
+                        .append(vec(e * s + t, t, e * s + t)).append("\nVector3d v2 ").append(vec(-e * s + t, t, e * s + t))
+                        .append("\nref material floorMat\n\n");
+                b.append("Surface Triangle\nVector3d v0 ").append(vec(-e * s + t, t, -e * s + t)).append("\nVector3d v1 ")
+                        .append(vec(e * s + t, t, -e * s + t)).append("\nVector3d v2 ").append(vec(e * s + t, t, e * s + t))
+                        .append("\nref material floorMat\n\n");
+            }
             b.append("Surface Triangle\nVector3d v0 ").append(vec(-e * s + t, t, -e * s + t)).append("\nVector3d v1 ")
                     .append(vec(-e * s + t, t, e * s + t)).append("\nVector3d v2 ").append(vec(e * s + t, t, e * s + t))
                     .append("\nref material floorMat\n\n");
@@ -60,7 +70,8 @@ class NoAcneTest {
     @ParameterizedTest(name = "{0} floor, scale {1}, translation {2}")
     @CsvSource({"sphere, 1e-4, 0", "sphere, 1, 0", "sphere, 1e4, 0", "sphere, 1e-4, 100", "sphere, 1, 1e6", "sphere, 1e4, 1e10",
         "sphere, 1e-6, 0", "sphere, 1e6, 1e12",
-        "triangles, 1e-4, 0", "triangles, 1, 0", "triangles, 1e4, 0", "triangles, 1, 1e6", "triangles, 1e4, 1e10", "triangles, 1e6, 1e12"})
+        "triangles, 1e-4, 0", "triangles, 1, 0", "triangles, 1e4, 0", "triangles, 1, 1e6", "triangles, 1e4, 1e10", "triangles, 1e6, 1e12",
+        "two-sided, 1e-4, 0", "two-sided, 1, 0", "two-sided, 1e4, 1e10"})
     void grazingLightOnLargeFloorHasNoAcne(String floor, double s, double t) {
         Scene scene = RobustSupport.parse(scene(floor, s, t), "floor.txt");
         Image img = RobustSupport.render(scene);

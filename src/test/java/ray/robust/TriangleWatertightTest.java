@@ -19,6 +19,7 @@ import org.junit.jupiter.api.Test;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.Scene;
+import ray.accel.Aabb;
 import ray.parse.Parser;
 import ray.surface.Triangle;
 
@@ -144,6 +145,44 @@ class TriangleWatertightTest {
         return mean;
     }
 
+    /**
+     * Trap: a hit point computed as o + t d from a far origin is off the triangle's plane by the rounding
+     * of t times |d| (the distance travelled), so spawned rays start behind it. The point is computed
+     * from the barycentrics instead: it must lie within 8 eps max|v| of the plane (measured exactly) and
+     * within the record's own error bound, for triangles at scales 1e-6..1e6 up to a million sizes
+     * from the origin, hit from up to 1e4 sizes away with unnormalised directions.
+     */
+    @Test
+    void hitPointLiesOnTriangleWithinRelativeBound() {
+        forEachSeed(0x7e1a7eL, 10000, r -> {
+            double s = logUniform(r, 1e-6, 1e6);
+            Vector3d c = unit(r);
+            c.scale(s * logUniform(r, 1e-3, 1e6));
+            Vector3d a = add(c, s, unit(r)), b = add(c, s, unit(r)), d = add(c, s, unit(r));
+            Triangle tri = RobustSupport.triangle(a, b, d);
+            Vector3d n = new Vector3d();
+            n.cross(sub(b, a), sub(d, a));
+            if (tri.isDegenerate() || n.length() < 1e-3 * s * s) {
+                return;                                  // slivers are the needle test's business
+            }
+            n.normalize();
+            double u = 0.01 + 0.98 * r.nextDouble(), v = (0.99 - u) * r.nextDouble();
+            Vector3d aim = add(add(a, u, sub(b, a)), v, sub(d, a));
+            double cos = logUniform(r, 1e-3, 1);
+            Vector3d o = add(aim, s * logUniform(r, 1e-3, 1e4), RobustSupport.atAngle(r, n, cos));
+            Ray ray = new Ray(o, RobustSupport.unnormalised(r, sub(aim, o)));
+            ray.tMin = 0;
+            IntersectionRecord rec = new IntersectionRecord();
+            assertTrue(tri.intersects(ray, rec, null), "missed the interior of " + tri + ": " + ray);
+            double m = Math.max(maxAbs(a), Math.max(maxAbs(b), maxAbs(d)));
+            double res = Math.abs(RobustSupport.planeResidual(rec.location, a, b, d));
+            assertTrue(res <= 8 * RobustSupport.EPS * m, "hit point " + res + " off the plane (bound " + 8 * RobustSupport.EPS * m + "): "
+                    + rec + ", " + ray);
+            assertTrue(res <= rec.error, "record's error bound " + rec.error + " is below the actual error " + res);
+            assertTrue(rec.normal.dot(ray.direction) < 0 && Math.abs(rec.normal.length() - 1) < 1e-12, "normal: " + rec);
+        });
+    }
+
     /** Sanity check of the generator the other tests rely on: closed, outward-wound meshes. */
     @Test
     void generatedMeshesAreClosedAndWoundOutward() {
@@ -264,11 +303,10 @@ class TriangleWatertightTest {
                     assertTrue(Double.isFinite(rec.t) && Double.isFinite(maxAbs(rec.location)), "non-finite hit " + rec);
                     assertEquals(1, rec.normal.length(), 1e-12, "normal not unit: " + rec);
                     double slack = 1e-12 * (maxAbs(a) + s);
-                    javax.vecmath.Vector3d lo = new Vector3d(), hi = new Vector3d();
-                    lo.set(tri.bounds().minX - slack, tri.bounds().minY - slack, tri.bounds().minZ - slack);
-                    hi.set(tri.bounds().maxX + slack, tri.bounds().maxY + slack, tri.bounds().maxZ + slack);
+                    Aabb box = tri.bounds();
                     Vector3d q = rec.location;
-                    assertTrue(q.x >= lo.x && q.y >= lo.y && q.z >= lo.z && q.x <= hi.x && q.y <= hi.y && q.z <= hi.z,
+                    assertTrue(q.x >= box.minX - slack && q.y >= box.minY - slack && q.z >= box.minZ - slack
+                            && q.x <= box.maxX + slack && q.y <= box.maxY + slack && q.z <= box.maxZ + slack,
                             "hit outside the needle's box: " + rec + " for " + tri);
                 }
             }
