@@ -21,7 +21,6 @@ import ray.Ray;
 import ray.Scene;
 import ray.light.PointLight;
 import ray.material.BlinnPhong;
-import ray.material.Diffuse;
 import ray.parse.Parser;
 import ray.parse.SceneFormatException;
 import ray.render.Image;
