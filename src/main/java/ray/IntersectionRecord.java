@@ -16,6 +16,12 @@ public class IntersectionRecord {
 
     /** Fraction of a shadow ray's length left out at the light end (a light on a surface is unshadowed). */
     public static final double SHADOW_END = 1e-7;
+    /**
+     * Distance left out at the light end, relative to the light's largest coordinate (1024 eps, about
+     * 1.1e-13): a light placed on a surface is off it by its rounding, so far from the origin and close
+     * to the shading point the fraction {@link #SHADOW_END} alone would let that surface shadow it.
+     */
+    public static final double TARGET_ERROR = 1024 * 0x1p-53;
 
     public Vector3d location = new Vector3d();
     public Vector3d normal = new Vector3d();
@@ -46,7 +52,11 @@ public class IntersectionRecord {
         return r;
     }
 
-    /** A new ray from just off the surface to {@code target}: t runs from 0 to just short of 1. */
+    /**
+     * A new ray from just off the surface to {@code target}: t runs from 0 to just short of 1 (short by
+     * {@link #SHADOW_END} of the length or {@link #TARGET_ERROR} times the target's magnitude, whichever
+     * is more), so a surface the target lies on does not block it.
+     */
     public Ray spawnRayTo(Vector3d target) {
         Ray r = new Ray();
         spawnRayTo(target.x, target.y, target.z, r);
@@ -70,7 +80,11 @@ public class IntersectionRecord {
         out.direction.y = py - out.origin.y;
         out.direction.z = pz - out.origin.z;
         out.tMin = 0;
-        out.tMax = 1 - SHADOW_END;
+        // stop short of the target by a fraction of the length and by the target's own rounding error
+        double len = Math.sqrt(out.direction.x * out.direction.x + out.direction.y * out.direction.y
+                + out.direction.z * out.direction.z);
+        double m = Math.max(Math.abs(px), Math.max(Math.abs(py), Math.abs(pz)));
+        out.tMax = 1 - Math.max(SHADOW_END, TARGET_ERROR * m / len);
     }
 
     /**

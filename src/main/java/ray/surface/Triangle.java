@@ -83,6 +83,8 @@ public class Triangle extends Surface {
 
     /** Length of the per-ray array used by {@link #setupRay} and {@link #hit}. */
     public static final int KERNEL_SIZE = 12;
+    /** Relative rounding bound of the edge functions (16 eps; see {@link #hit}). */
+    private static final double PARALLEL = 16 * 0x1p-53;
     private static final int SX = 3, SY = 4, SZ = 5, OX = 6, OY = 7, OZ = 8, B0 = 9, B1 = 10, B2 = 11;
 
     /**
@@ -130,13 +132,12 @@ public class Triangle extends Surface {
         double cx = v[off + 6 + kx] - ox, cy = v[off + 6 + ky] - oy, cz = v[off + 6 + kz] - oz;
         // shear so the ray runs along +z
         double sx = k[SX], sy = k[SY];
-        ax -= sx * az; ay -= sy * az;
-        bx -= sx * bz; by -= sy * bz;
-        cx -= sx * cz; cy -= sy * cz;
+        double pax = sx * az, pay = sy * az, pbx = sx * bz, pby = sy * bz, pcx = sx * cz, pcy = sy * cz;
+        double qax = ax - pax, qay = ay - pay, qbx = bx - pbx, qby = by - pby, qcx = cx - pcx, qcy = cy - pcy;
         // edge functions; the front side gives all three >= 0
-        double u = cx * by - cy * bx;
-        double w0 = ax * cy - ay * cx;
-        double w1 = bx * ay - by * ax;
+        double u = qcx * qby - qcy * qbx;
+        double w0 = qax * qcy - qay * qcx;
+        double w1 = qbx * qay - qby * qax;
         if (u < 0 || w0 < 0 || w1 < 0) {
             return Double.NaN;
         }
@@ -147,6 +148,15 @@ public class Triangle extends Surface {
         double sz = k[SZ];
         double tScaled = sz * (u * az + w0 * bz + w1 * cz);
         if (tScaled < tMin * det || tScaled > tMax * det) {
+            return Double.NaN;
+        }
+        // det (twice the sheared triangle's area) within its rounding error of 0: the ray lies in the
+        // triangle's plane up to rounding, and t = tScaled / det would be noise. Each sheared coordinate
+        // is off by at most 4 eps (|a| + |s a_z|); 16 eps covers each edge function's products.
+        double mAx = Math.abs(ax) + Math.abs(pax), mAy = Math.abs(ay) + Math.abs(pay);
+        double mBx = Math.abs(bx) + Math.abs(pbx), mBy = Math.abs(by) + Math.abs(pby);
+        double mCx = Math.abs(cx) + Math.abs(pcx), mCy = Math.abs(cy) + Math.abs(pcy);
+        if (det <= PARALLEL * (mCx * mBy + mCy * mBx + mAx * mCy + mAy * mCx + mBx * mAy + mBy * mAx)) {
             return Double.NaN;
         }
         double inv = 1 / det;
