@@ -1,6 +1,7 @@
 package ray.parse;
 
 import java.io.IOException;
+import java.lang.reflect.Constructor;
 import java.lang.reflect.Field;
 import java.lang.reflect.InvocationTargetException;
 import java.nio.ByteBuffer;
@@ -42,6 +43,9 @@ public final class Parser {
     private final Scene scene = new Scene();
     private final Map<String, Object> named = new HashMap<>();
     private final Map<String, Integer> globalLines = new HashMap<>();
+    /** Header "type ClassName" to its class, and classes to constructors: resolved once per file. */
+    private final Map<String, Class<?>> resolved = new HashMap<>();
+    private final Map<Class<?>, Constructor<?>> constructors = new HashMap<>();
     private final List<String> warnings = new ArrayList<>();
 
     // the object being read
@@ -164,7 +168,7 @@ public final class Parser {
     }
 
     private void statement(String s) throws SceneFormatException {
-        String[] tok = s.split("\\s+", 3);
+        String[] tok = Tokens.split(s, false, 3);
         String head = tok[0];
         if (current != null && TYPES.contains(head)) {
             parameter(tok, s);
@@ -192,15 +196,18 @@ public final class Parser {
             throw error("'" + type + "' needs a class name (expected '" + type + " <ClassName> [name]', e.g. '"
                     + type + " " + ClassResolver.builtIns(type).split(",")[0] + "')");
         }
-        String[] rest = tok.length == 3 ? tok[2].split("\\s+") : new String[0];
+        String[] rest = tok.length == 3 ? Tokens.split(tok[2], false, 0) : new String[0];
         if (rest.length > 1) {
             throw error("too many words in the header (expected '" + type + " <ClassName> [name]')");
         }
-        Class<?> c;
-        try {
-            c = resolver.resolve(type, tok[1]);
-        } catch (ClassResolver.Problem p) {
-            throw error(p.getMessage());
+        Class<?> c = resolved.get(type + ' ' + tok[1]);
+        if (c == null) {
+            try {
+                c = resolver.resolve(type, tok[1]);
+            } catch (ClassResolver.Problem p) {
+                throw error(p.getMessage());
+            }
+            resolved.put(type + ' ' + tok[1], c);
         }
         String name = rest.length == 1 ? rest[0] : null;
         if (name != null && named.containsKey(name)) {
@@ -208,7 +215,12 @@ public final class Parser {
         }
         Object o;
         try {
-            o = c.getConstructor().newInstance();
+            Constructor<?> k = constructors.get(c);
+            if (k == null) {
+                k = c.getConstructor();
+                constructors.put(c, k);
+            }
+            o = k.newInstance();
         } catch (InvocationTargetException e) {
             throw error("creating " + tok[1] + " failed: " + describe(e.getCause()));
         } catch (ReflectiveOperationException | RuntimeException | LinkageError e) {
@@ -261,7 +273,7 @@ public final class Parser {
                 break;
             default:   // ref
                 requireFieldType(!ft.isPrimitive() && ft != String.class, type, f);
-                if (value.split("\\s+").length > 1) {
+                if (Tokens.split(value, false, 0).length > 1) {
                     throw error("'ref " + fieldName + "' takes one object name, got '" + value + "'");
                 }
                 Object target = named.get(value);
@@ -416,7 +428,7 @@ public final class Parser {
     // ---- values ----
 
     private int parseInt(String s, String what) throws SceneFormatException {
-        if (!s.matches("[+-]?[0-9]+")) {
+        if (!Tokens.isInteger(s)) {
             throw error("'" + s + "' is not an integer (expected a whole number for " + what + ")");
         }
         try {
@@ -430,7 +442,7 @@ public final class Parser {
         if (!isDecimal(s)) {
             throw error("'" + s + "' is not a number (expected a decimal number such as 1.5 or -2e3 for " + what + ")");
         }
-        double d = Double.parseDouble(s);
+        double d = Tokens.parseDecimal(s);
         if (!Double.isFinite(d)) {
             throw error("number '" + s + "' is too large (expected a finite number for " + what + ")");
         }
@@ -463,7 +475,7 @@ public final class Parser {
         if (!s.startsWith("[") || !s.endsWith("]") || s.length() < 2) {
             throw error("malformed vector '" + s + "'" + expected);
         }
-        String[] parts = s.substring(1, s.length() - 1).strip().split("[\\s,]+");
+        String[] parts = Tokens.split(s.substring(1, s.length() - 1).strip(), true, 0);
         if (parts.length != 3 || parts[0].isEmpty()) {
             throw error("malformed vector '" + s + "': " + (parts[0].isEmpty() ? 0 : parts.length) + " numbers" + expected);
         }
@@ -472,7 +484,7 @@ public final class Parser {
             if (!isDecimal(parts[i])) {
                 throw error("malformed vector '" + s + "': '" + parts[i] + "' is not a number" + expected);
             }
-            v[i] = Double.parseDouble(parts[i]);
+            v[i] = Tokens.parseDecimal(parts[i]);
             if (!Double.isFinite(v[i])) {
                 throw error("vector '" + s + "' has a number too large" + expected);
             }
