@@ -140,6 +140,12 @@ public final class Parser {
             }
             String raw = text.substring(pos, end);
             pos = end + 1;
+            String[] words = Tokens.canonicalWords(raw);
+            if (words != null) {      // the common case: no comment, single spaces, nothing to strip
+                any = true;
+                statement(raw, words);
+                continue;
+            }
             String s = stripComment(raw).strip();
             if (s.isEmpty()) {
                 if (raw.strip().isEmpty()) {
@@ -148,7 +154,7 @@ public final class Parser {
                 continue;
             }
             any = true;
-            statement(s);
+            statement(s, Tokens.split(s, false, 3));
         }
         endObject();
         if (!any) {
@@ -167,8 +173,7 @@ public final class Parser {
         return s;
     }
 
-    private void statement(String s) throws SceneFormatException {
-        String[] tok = Tokens.split(s, false, 3);
+    private void statement(String s, String[] tok) throws SceneFormatException {
         String head = tok[0];
         if (current != null && TYPES.contains(head)) {
             parameter(tok, s);
@@ -471,6 +476,10 @@ public final class Parser {
     }
 
     private Vector3d parseVector(String s, String what) throws SceneFormatException {
+        double[] fast = Tokens.canonicalVector(s);
+        if (fast != null) {
+            return new Vector3d(fast[0], fast[1], fast[2]);
+        }
         String expected = " (expected [x y z] with three numbers for " + what + ")";
         if (!s.startsWith("[") || !s.endsWith("]") || s.length() < 2) {
             throw error("malformed vector '" + s + "'" + expected);

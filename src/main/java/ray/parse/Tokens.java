@@ -120,16 +120,49 @@ final class Tokens {
         1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
 
     /**
-     * {@code Double.parseDouble(s)} for a string that {@link Parser#isDecimal} accepted, bit for bit.
-     * Numbers with at most 15 significant digits and a decimal exponent within ±22 take Clinger's
-     * fast path: the digits and the power of ten are both exact doubles, so one IEEE multiply or
-     * divide gives the correctly rounded result, as {@code parseDouble} does. Anything else goes to
-     * {@code parseDouble}.
+     * {@code Parser.isDecimal(s.substring(from, to))} without the substring: [+-] digits [. digits]
+     * [e [+-] digits], or starting with the point; ASCII digits only.
      */
+    static boolean isDecimal(String s, int from, int to) {
+        int i = from;
+        if (i < to && (s.charAt(i) == '+' || s.charAt(i) == '-')) i++;
+        int digits = 0;
+        while (i < to && isDigit(s.charAt(i))) { i++; digits++; }
+        if (i < to && s.charAt(i) == '.') {
+            i++;
+            while (i < to && isDigit(s.charAt(i))) { i++; digits++; }
+        }
+        if (digits == 0) return false;
+        if (i < to && (s.charAt(i) == 'e' || s.charAt(i) == 'E')) {
+            i++;
+            if (i < to && (s.charAt(i) == '+' || s.charAt(i) == '-')) i++;
+            int e = 0;
+            while (i < to && isDigit(s.charAt(i))) { i++; e++; }
+            if (e == 0) return false;
+        }
+        return i == to;
+    }
+
+    private static boolean isDigit(char c) {
+        return c >= '0' && c <= '9';
+    }
+
+    /** {@link #parseDecimal(String, int, int)} of the whole string. */
     static double parseDecimal(String s) {
-        int i = 0, n = s.length();
+        return parseDecimal(s, 0, s.length());
+    }
+
+    /**
+     * {@code Double.parseDouble(s.substring(from, to))}, bit for bit, for a range that
+     * {@link #isDecimal} accepted. Numbers with at most 15 significant digits and a decimal exponent
+     * within ±22 take Clinger's fast path: the digits and the power of ten are both exact doubles, so
+     * one IEEE multiply or divide gives the correctly rounded result, as {@code parseDouble} does.
+     * Anything else goes to {@code parseDouble}.
+     */
+    static double parseDecimal(String s, int from, int to) {
+        int i = from, n = to;
         boolean neg = false;
-        char c0 = s.charAt(0);
+        char c0 = s.charAt(from);
         if (c0 == '+' || c0 == '-') {
             neg = c0 == '-';
             i++;
@@ -143,7 +176,7 @@ final class Tokens {
             }
             if (m != 0 || c != '0') {
                 if (++digits > 15) {
-                    return Double.parseDouble(s);
+                    return Double.parseDouble(s.substring(from, to));
                 }
             }
             m = 10 * m + (c - '0');
@@ -156,7 +189,7 @@ final class Tokens {
                 }
                 if (m != 0 || c != '0') {
                     if (++digits > 15) {
-                        return Double.parseDouble(s);
+                        return Double.parseDouble(s.substring(from, to));
                     }
                 }
                 m = 10 * m + (c - '0');
@@ -172,7 +205,7 @@ final class Tokens {
                 i++;
             }
             if (n - i > 4) {
-                return Double.parseDouble(s);
+                return Double.parseDouble(s.substring(from, to));
             }
             int e = 0;
             for (; i < n; i++) {
@@ -184,16 +217,83 @@ final class Tokens {
         if (m != 0) {
             if (exp < 0) {
                 if (exp < -22) {
-                    return Double.parseDouble(s);
+                    return Double.parseDouble(s.substring(from, to));
                 }
                 v /= POW10[-exp];
             } else if (exp > 0) {
                 if (exp > 22) {
-                    return Double.parseDouble(s);
+                    return Double.parseDouble(s.substring(from, to));
                 }
                 v *= POW10[exp];
             }
         }
         return neg ? -v : v;
+    }
+
+    /**
+     * Splits a canonical line into {@code split(line, false, 3)}'s tokens, or returns null when the
+     * line is not canonical: non-empty, printable ASCII and single spaces only, no '#', no space at
+     * either end. For such a line {@code stripComment(line).strip()} is the line itself and the
+     * regular split is just a cut at the first two spaces, so the parser's general path would see
+     * exactly these tokens.
+     */
+    static String[] canonicalWords(String line) {
+        int n = line.length();
+        if (n == 0 || line.charAt(0) == ' ' || line.charAt(n - 1) == ' ') {
+            return null;
+        }
+        int first = -1, second = -1;
+        char prev = 'x';
+        for (int i = 0; i < n; i++) {
+            char c = line.charAt(i);
+            if (c == ' ') {
+                if (prev == ' ') {
+                    return null;
+                }
+                if (first < 0) {
+                    first = i;
+                } else if (second < 0) {
+                    second = i;
+                }
+            } else if (c < 0x21 || c > 0x7E || c == '#') {
+                return null;
+            }
+            prev = c;
+        }
+        if (first < 0) {
+            return new String[] {line};
+        }
+        if (second < 0) {
+            return new String[] {line.substring(0, first), line.substring(first + 1)};
+        }
+        return new String[] {line.substring(0, first), line.substring(first + 1, second), line.substring(second + 1)};
+    }
+
+    /**
+     * The three numbers of a canonical vector {@code [x y z]} (single spaces, no commas, no spaces
+     * inside the brackets' ends, each a decimal that {@link #isDecimal} accepts), or null for anything
+     * else, which the parser's general path then reads (and reports).
+     */
+    static double[] canonicalVector(String s) {
+        int n = s.length();
+        if (n < 7 || s.charAt(0) != '[' || s.charAt(n - 1) != ']') {
+            return null;
+        }
+        int a = s.indexOf(' ', 1);
+        if (a < 0) {
+            return null;
+        }
+        int b = s.indexOf(' ', a + 1);
+        if (b < 0 || s.indexOf(' ', b + 1) >= 0 || s.indexOf(',') >= 0) {
+            return null;
+        }
+        if (!isDecimal(s, 1, a) || !isDecimal(s, a + 1, b) || !isDecimal(s, b + 1, n - 1)) {
+            return null;
+        }
+        double x = parseDecimal(s, 1, a), y = parseDecimal(s, a + 1, b), z = parseDecimal(s, b + 1, n - 1);
+        if (!Double.isFinite(x) || !Double.isFinite(y) || !Double.isFinite(z)) {
+            return null;
+        }
+        return new double[] {x, y, z};
     }
 }

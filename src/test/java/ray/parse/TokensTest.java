@@ -85,4 +85,52 @@ class TokensTest {
             assertEquals(Double.doubleToRawLongBits(Double.parseDouble(s)), Double.doubleToRawLongBits(Tokens.parseDecimal(s)), s);
         }
     }
+
+    /** The fast path may only take lines on which the general path would see the very same words. */
+    @Test
+    void canonicalWordsAgreeWithStripAndSplit() {
+        Random r = new Random(11);
+        String alphabet = "ab #\t[]1.";
+        int taken = 0;
+        for (int k = 0; k < 200_000; k++) {
+            int n = r.nextInt(10);
+            StringBuilder b = new StringBuilder();
+            for (int i = 0; i < n; i++) b.append(alphabet.charAt(r.nextInt(alphabet.length())));
+            String line = b.toString();
+            String[] words = Tokens.canonicalWords(line);
+            if (words == null) continue;
+            taken++;
+            assertEquals(-1, line.indexOf('#'), line);
+            assertEquals(line.strip(), line, line);
+            assertArrayEquals(line.split("\\s+", 3), words, line);
+        }
+        assertEquals(true, taken > 10_000, "the fast path should take most plain lines");
+    }
+
+    @Test
+    void canonicalVectorReadsOnlyPlainVectorsAndReadsThemExactly() {
+        Random r = new Random(12);
+        String alphabet = "[] ,\t-.e0123456789";
+        int taken = 0;
+        for (int k = 0; k < 300_000; k++) {
+            int n = 2 + r.nextInt(14);
+            StringBuilder b = new StringBuilder("[");
+            for (int i = 0; i < n; i++) b.append(alphabet.charAt(r.nextInt(alphabet.length())));
+            b.append(']');
+            String s = b.toString();
+            double[] v = Tokens.canonicalVector(s);
+            if (v == null) continue;
+            taken++;
+            String[] parts = s.substring(1, s.length() - 1).strip().split("[\\s,]+");
+            assertEquals(3, parts.length, s);
+            for (int i = 0; i < 3; i++) {
+                assertEquals(true, Parser.isDecimal(parts[i]), s);
+                assertEquals(Double.doubleToRawLongBits(Double.parseDouble(parts[i])), Double.doubleToRawLongBits(v[i]), s);
+            }
+        }
+        assertEquals(true, taken > 100, "some random vectors are plain");
+        assertArrayEquals(new double[] {1, -2.5, 3e-3}, Tokens.canonicalVector("[1 -2.5 3e-3]"));
+        assertEquals(null, Tokens.canonicalVector("[1, 2, 3]"));      // commas: the general path's job
+        assertEquals(null, Tokens.canonicalVector("[1 2 1e999]"));    // too large: the general path reports it
+    }
 }
