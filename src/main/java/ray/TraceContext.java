@@ -22,6 +22,8 @@ public final class TraceContext {
     public final RayStats stats = new RayStats();
     /** BVH traversal stack (node indices); 64 levels is deeper than any SAH tree over 2^31 primitives. */
     public final int[] stack = new int[128];
+    /** Entry distances of the subtrees on {@link #stack} (closest-hit traversal skips those beyond the hit). */
+    public final double[] stackT = new double[128];
     /** Ray set-up for watertight triangle tests, filled once per ray by the accelerator. */
     public final double[] rayKernel = new double[ray.surface.Triangle.KERNEL_SIZE];
     /** Nesting of {@link Scene#trace(Ray)} calls made from inside material code (bounds user recursion). */

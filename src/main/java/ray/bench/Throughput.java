@@ -16,7 +16,7 @@ import ray.accel.Accelerator;
 public final class Throughput {
 
     /** Rays per second of one query kind: median and best over the timed passes. */
-    public record Rate(String query, int rays, double medianSeconds, double bestSeconds, int hits) {
+    public record Rate(String query, int rays, double medianSeconds, double bestSeconds, int hits, double cpuSeconds) {
         public double mraysPerSecond() {
             return rays / medianSeconds / 1e6;
         }
@@ -65,18 +65,23 @@ public final class Throughput {
         TraceContext ctx = new TraceContext(scene.maxDepth);
         Ray r = new Ray();
         IntersectionRecord rec = new IntersectionRecord();
-        double[] times = new double[passes];
+        double[] times = new double[passes], cpu = new double[passes];
+        java.lang.management.ThreadMXBean mx = java.lang.management.ManagementFactory.getThreadMXBean();
         int hits = 0;
         for (int p = -warmups; p < passes; p++) {
+            long c0 = mx.getCurrentThreadCpuTime();
             long t0 = System.nanoTime();
             hits = pass(accel, ctx, r, rec, closest);
             long t1 = System.nanoTime();
+            long c1 = mx.getCurrentThreadCpuTime();
             if (p >= 0) {
                 times[p] = (t1 - t0) / 1e9;
+                cpu[p] = (c1 - c0) / 1e9;
             }
         }
         Arrays.sort(times);
-        return new Rate(closest ? "closest hit" : "any hit", count, times[passes / 2], times[0], hits);
+        Arrays.sort(cpu);
+        return new Rate(closest ? "closest hit" : "any hit", count, times[passes / 2], times[0], hits, cpu[passes / 2]);
     }
 
     private int pass(Accelerator accel, TraceContext ctx, Ray r, IntersectionRecord rec, boolean closest) {
@@ -97,8 +102,9 @@ public final class Throughput {
         int passes = args.length > 1 ? Integer.parseInt(args[1]) : 7;
         Throughput t = new Throughput(s);
         for (Rate r : new Rate[] {t.closestHit(3, passes), t.anyHit(3, passes)}) {
-            System.out.printf("%-11s %,d rays, %.1f%% hit: median %.2f Mrays/s, best %.2f Mrays/s%n", r.query(), r.rays(),
-                    100.0 * r.hits() / r.rays(), r.mraysPerSecond(), r.bestMraysPerSecond());
+            System.out.printf("%-11s %,d rays, %.1f%% hit: median %.2f Mrays/s, best %.2f Mrays/s (per CPU second: %.2f)%n",
+                    r.query(), r.rays(), 100.0 * r.hits() / r.rays(), r.mraysPerSecond(), r.bestMraysPerSecond(),
+                    r.rays() / r.cpuSeconds() / 1e6);
         }
     }
 }
