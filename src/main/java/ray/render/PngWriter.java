@@ -19,7 +19,7 @@ public final class PngWriter {
 
     public static void write(Image image, Path target) throws IOException {
         Path dir = target.toAbsolutePath().getParent();
-        Path tmp = Files.createTempFile(dir, "." + target.getFileName() + ".", ".tmp");
+        Path tmp = newTempFile(dir, target.getFileName().toString());
         Thread cleanup = new Thread(() -> deleteQuietly(tmp));
         Runtime.getRuntime().addShutdownHook(cleanup);   // Ctrl-C during the write: no stray temp file
         try {
@@ -40,6 +40,26 @@ public final class PngWriter {
             }
         }
     }
+
+    /**
+     * Creates a new empty hidden file {@code .<name>.<unique>.tmp} in {@code dir}. Not
+     * Files.createTempFile: its random names come from SecureRandom, whose set-up (security
+     * providers) costs ~10 ms of a short render's start-up; a name from the clock and a counter,
+     * created with CREATE_NEW, is as safe against clobbering.
+     */
+    private static Path newTempFile(Path dir, String name) throws IOException {
+        while (true) {
+            Path p = dir.resolve("." + name + "." + Long.toHexString(System.nanoTime()) + "-" + COUNTER.incrementAndGet() + ".tmp");
+            try {
+                Files.newByteChannel(p, java.nio.file.StandardOpenOption.CREATE_NEW, java.nio.file.StandardOpenOption.WRITE).close();
+                return p;
+            } catch (java.nio.file.FileAlreadyExistsException taken) {
+                // another writer picked the same name: try the next one
+            }
+        }
+    }
+
+    private static final java.util.concurrent.atomic.AtomicLong COUNTER = new java.util.concurrent.atomic.AtomicLong();
 
     private static void deleteQuietly(Path p) {
         try {
