@@ -155,110 +155,120 @@ public final class Bvh implements Accelerator {
     public boolean closestHit(Ray ray, IntersectionRecord rec, TraceContext ctx) {
         double tMin = ray.tMin, best = ray.tMax;
         int hit = -1, hitSlot = Integer.MAX_VALUE;
-        double savedTMax = ray.tMax;
-        try {
-            for (Surface s : unbounded) {
-                ray.tMax = best;
-                if (s.intersects(ray, rec, scene)) {
-                    best = rec.t;
-                    hit = OTHER | (-1 << 2);
-                    finishOther(ray, rec, s);
-                }
+        for (Surface s : unbounded) {
+            if (userHit(s, ray, best, rec)) {
+                best = rec.t;
+                hit = OTHER | (-1 << 2);
             }
-            double ox = ray.origin.x, oy = ray.origin.y, oz = ray.origin.z;
-            double dx = ray.direction.x, dy = ray.direction.y, dz = ray.direction.z;
-            double ix = 1 / dx, iy = 1 / dy, iz = 1 / dz;
-            // near/far plane offsets in a 6-float box, from the direction's signs
-            int nx = ix < 0 ? 3 : 0, ny = iy < 0 ? 4 : 1, nz = iz < 0 ? 5 : 2;
-            int fx = 3 - nx, fy = 5 - ny, fz = 7 - nz;
-            float[] rb = rootBox;
-            if (!(slabs(rb, 0, nx, ny, nz, fx, fy, fz, ox, oy, oz, ix, iy, iz, tMin, best) <= Double.MAX_VALUE)) {
-                return hit != -1;
-            }
-            double[] k = ctx.rayKernel;
-            Triangle.setupRay(ray, k);
-            int kx = (int) k[0], ky = (int) k[1], kz = (int) k[2];
-            double sx = k[3], sy = k[4], sz = k[5], okx = k[6], oky = k[7], okz = k[8];
-            float[] nb = nodeBox;
-            int[] nc = nodeChild, pr = prims;
-            double[] tv = tris, sv = spheres;
-            int[] stack = ctx.stack;
-            double[] stackT = ctx.stackT;
-            int sp = 0, ref = root;
-            while (true) {
-                if (ref >= 0) {
-                    // inner node: test both children, go to the nearer, keep the farther
-                    int o = 12 * ref;
-                    double t0 = slabs(nb, o, nx, ny, nz, fx, fy, fz, ox, oy, oz, ix, iy, iz, tMin, best);
-                    double t1 = slabs(nb, o + 6, nx, ny, nz, fx, fy, fz, ox, oy, oz, ix, iy, iz, tMin, best);
-                    boolean h0 = t0 <= Double.MAX_VALUE, h1 = t1 <= Double.MAX_VALUE;
-                    if (h0 && h1) {
-                        if (t1 < t0) {
-                            stack[sp] = nc[2 * ref];
-                            stackT[sp++] = t0;
-                            ref = nc[2 * ref + 1];
-                        } else {
-                            stack[sp] = nc[2 * ref + 1];
-                            stackT[sp++] = t1;
-                            ref = nc[2 * ref];
-                        }
-                        continue;
-                    } else if (h0) {
-                        ref = nc[2 * ref];
-                        continue;
-                    } else if (h1) {
+        }
+        double ox = ray.origin.x, oy = ray.origin.y, oz = ray.origin.z;
+        double dx = ray.direction.x, dy = ray.direction.y, dz = ray.direction.z;
+        double ix = 1 / dx, iy = 1 / dy, iz = 1 / dz;
+        // near/far plane offsets in a 6-float box, from the direction's signs
+        int nx = ix < 0 ? 3 : 0, ny = iy < 0 ? 4 : 1, nz = iz < 0 ? 5 : 2;
+        int fx = 3 - nx, fy = 5 - ny, fz = 7 - nz;
+        float[] rb = rootBox;
+        if (!(slabs(rb, 0, nx, ny, nz, fx, fy, fz, ox, oy, oz, ix, iy, iz, tMin, best) <= Double.MAX_VALUE)) {
+            return hit != -1;
+        }
+        double[] k = ctx.rayKernel;
+        Triangle.setupRay(ray, k);
+        int kx = (int) k[0], ky = (int) k[1], kz = (int) k[2];
+        double sx = k[3], sy = k[4], sz = k[5], okx = k[6], oky = k[7], okz = k[8];
+        float[] nb = nodeBox;
+        int[] nc = nodeChild, pr = prims;
+        double[] tv = tris, sv = spheres;
+        int[] stack = ctx.stack;
+        double[] stackT = ctx.stackT;
+        int sp = 0, ref = root;
+        while (true) {
+            if (ref >= 0) {
+                // inner node: test both children, go to the nearer, keep the farther
+                int o = 12 * ref;
+                double t0 = slabs(nb, o, nx, ny, nz, fx, fy, fz, ox, oy, oz, ix, iy, iz, tMin, best);
+                double t1 = slabs(nb, o + 6, nx, ny, nz, fx, fy, fz, ox, oy, oz, ix, iy, iz, tMin, best);
+                boolean h0 = t0 <= Double.MAX_VALUE, h1 = t1 <= Double.MAX_VALUE;
+                if (h0 && h1) {
+                    if (t1 < t0) {
+                        stack[sp] = nc[2 * ref];
+                        stackT[sp++] = t0;
                         ref = nc[2 * ref + 1];
-                        continue;
+                    } else {
+                        stack[sp] = nc[2 * ref + 1];
+                        stackT[sp++] = t1;
+                        ref = nc[2 * ref];
                     }
-                } else {
-                    int leaf = ~ref;
-                    for (int i = leaf >>> 4, end = i + (leaf & 15); i < end; i++) {
-                        int p = pr[i], idx = p >>> 2;
-                        switch (p & 3) {
-                            case TRI: {
-                                double t = triangleT(tv, 9 * idx, kx, ky, kz, sx, sy, sz, okx, oky, okz, tMin, best);
-                                if (t < best || (t == best && i < hitSlot)) {
-                                    best = t;
-                                    hit = p;
-                                    hitSlot = i;
-                                }
-                                break;
+                    continue;
+                } else if (h0) {
+                    ref = nc[2 * ref];
+                    continue;
+                } else if (h1) {
+                    ref = nc[2 * ref + 1];
+                    continue;
+                }
+            } else {
+                int leaf = ~ref;
+                for (int i = leaf >>> 4, end = i + (leaf & 15); i < end; i++) {
+                    int p = pr[i], idx = p >>> 2;
+                    switch (p & 3) {
+                        case TRI: {
+                            double t = triangleT(tv, 9 * idx, kx, ky, kz, sx, sy, sz, okx, oky, okz, tMin, best);
+                            if (t < best || (t == best && i < hitSlot)) {
+                                best = t;
+                                hit = p;
+                                hitSlot = i;
                             }
-                            case SPHERE: {
-                                int so = 4 * idx;
-                                double t = Sphere.hit(sv[so], sv[so + 1], sv[so + 2], sv[so + 3],
-                                        ox, oy, oz, dx, dy, dz, tMin, best);
-                                if (t < best || (t == best && i < hitSlot)) {
-                                    best = t;
-                                    hit = p;
-                                    hitSlot = i;
-                                }
-                                break;
+                            break;
+                        }
+                        case SPHERE: {
+                            int so = 4 * idx;
+                            double t = Sphere.hit(sv[so], sv[so + 1], sv[so + 2], sv[so + 3],
+                                    ox, oy, oz, dx, dy, dz, tMin, best);
+                            if (t < best || (t == best && i < hitSlot)) {
+                                best = t;
+                                hit = p;
+                                hitSlot = i;
                             }
-                            default: {
-                                ray.tMax = best;
-                                Surface s = others[idx];
-                                if (s.intersects(ray, rec, scene)) {
-                                    best = rec.t;
-                                    hit = p;
-                                    hitSlot = i;
-                                    finishOther(ray, rec, s);
-                                }
+                            break;
+                        }
+                        default: {
+                            if (userHit(others[idx], ray, best, rec)) {
+                                best = rec.t;
+                                hit = p;
+                                hitSlot = i;
                             }
                         }
                     }
                 }
-                // pop the nearest pending subtree that may still hold a closer hit
-                do {
-                    if (sp == 0) {
-                        return finish(hit, best, ray, rec, k, ox, oy, oz, dx, dy, dz);
-                    }
-                    ref = stack[--sp];
-                } while (stackT[sp] > best * SLAB_SLACK);
+            }
+            // pop the nearest pending subtree that may still hold a closer hit
+            do {
+                if (sp == 0) {
+                    return finish(hit, best, ray, rec, k, ox, oy, oz, dx, dy, dz);
+                }
+                ref = stack[--sp];
+            } while (stackT[sp] > best * SLAB_SLACK);
+        }
+    }
+
+    /**
+     * A user surface's own test over [ray.tMin, best]; on a hit the record is filled and its normal
+     * made to face the ray. The ray's tMax is restored even if the surface throws. Kept out of
+     * closestHit on purpose: on JDK 17.0.15, closestHit with this try/finally inside, loaded from the
+     * launcher's dynamic CDS archive, was never JIT-compiled again (15x slower; docs/performance.md).
+     */
+    private boolean userHit(Surface s, Ray ray, double best, IntersectionRecord rec) {
+        double saved = ray.tMax;
+        ray.tMax = best;
+        try {
+            if (!s.intersects(ray, rec, scene)) {
+                return false;
             }
         } finally {
-            ray.tMax = savedTMax;
+            ray.tMax = saved;
         }
+        finishOther(ray, rec, s);
+        return true;
     }
 
     /** Fills the record for the closest hit found (a user surface has filled it already). */

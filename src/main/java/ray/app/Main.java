@@ -12,6 +12,7 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import ray.Scene;
 import ray.accel.Bvh;
+import ray.bench.Bench;
 import ray.parse.Parser;
 import ray.parse.SceneFormatException;
 import ray.render.Image;
@@ -45,6 +46,26 @@ public final class Main implements Callable<Integer> {
 
     @Option(names = "--stats", description = "print parse, build, render and write times, rays by kind, peak memory and BVH size")
     boolean stats;
+
+    @Option(names = "--bench", description = "render the benchmark scenes as whole processes and print the table: wall time, "
+            + "parse/build/render/write, rays by kind, peak memory (docs/performance.md)")
+    boolean bench;
+
+    @Option(names = "--runs", paramLabel = "N", description = "with --bench: timed runs per scene after one warm-up (default ${DEFAULT-VALUE})")
+    int runs = 3;
+
+    @Option(names = "--peers", description = "with --bench: also time the installed peer renderers, interleaved, and compare with Embree")
+    boolean peers;
+
+    @Option(names = "--bench-dir", paramLabel = "DIR", description = "with --bench: the benchmark directory (scenes/, gen/, peers/); "
+            + "default $RAYTRACER_BENCH_DIR or ../shared/bench")
+    Path benchDir;
+
+    @Option(names = "--bench-scenes", paramLabel = "LIST", description = "with --bench: some of classic,mirrors,spheres10k,mesh100k")
+    String benchScenes;
+
+    @Option(names = "--bench-work", paramLabel = "DIR", description = "with --bench: where images, logs and generated scenes go (default: a raytracer-bench directory in the temporary directory)")
+    Path benchWork;
 
     private PrintStream out = System.out;
     private PrintStream err = System.err;
@@ -151,6 +172,25 @@ public final class Main implements Callable<Integer> {
             err.println("raytracer: --threads must be at least 1");
             return 2;
         }
+        if (bench) {
+            if (!scenes.isEmpty() || output != null || runs < 1) {
+                err.println("raytracer: --bench takes no scene files and no --output, and --runs must be at least 1");
+                return 2;
+            }
+            try {
+                Path work = benchWork != null ? benchWork : Path.of(System.getProperty("java.io.tmpdir"), "raytracer-bench");
+                return new Bench(out, err, runs, peers, Bench.findBenchDir(benchDir), work, Bench.sceneList(benchScenes)).run();
+            } catch (IllegalArgumentException e) {
+                err.println("raytracer: " + e.getMessage());
+                return 2;
+            } catch (java.io.IOException e) {
+                err.println("raytracer: bench: " + e.getMessage());
+                return 1;
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                return 1;
+            }
+        }
         if (output != null && scenes.size() != 1) {
             err.println("raytracer: --output needs exactly one scene file");
             return 2;
@@ -226,7 +266,7 @@ public final class Main implements Callable<Integer> {
             long peak = peakRssBytes();
             out.println("  parse " + fixed(t1 - t0, 3) + " s, build " + fixed(build, 3) + " s, render " + fixed(t2 - t1 - build, 3)
                     + " s, write " + fixed(t3 - t2, 3) + " s; " + renderer.stats()
-                    + (peak > 0 ? "; peak RSS " + (peak >> 20) + " MiB" : "") + bvh);
+                    + (peak > 0 ? "; peak RSS " + (peak >> 20) + " MiB" : "") + bvh + "; cpu " + fixed(processCpuNanos(), 3) + " s");
         }
         if (renderer.stats().invalidSamples > 0) {
             err.println(scenePath + ": warning: " + renderer.stats().invalidSamples + " samples were NaN or infinite and were left black");
@@ -243,6 +283,12 @@ public final class Main implements Callable<Integer> {
             frac = "0" + frac;
         }
         return units / scale + "." + frac;
+    }
+
+    /** CPU time of this process so far (all threads: render, JIT compiler, GC), or 0 where unknown. */
+    static long processCpuNanos() {
+        java.lang.management.OperatingSystemMXBean os = java.lang.management.ManagementFactory.getOperatingSystemMXBean();
+        return os instanceof com.sun.management.OperatingSystemMXBean o ? Math.max(0, o.getProcessCpuTime()) : 0;
     }
 
     /** Peak resident set size of this process (VmHWM on Linux), or 0 where unknown. */
