@@ -167,14 +167,14 @@ public final class Bvh implements Accelerator {
         // near/far plane offsets in a 6-float box, from the direction's signs
         int nx = ix < 0 ? 3 : 0, ny = iy < 0 ? 4 : 1, nz = iz < 0 ? 5 : 2;
         int fx = 3 - nx, fy = 5 - ny, fz = 7 - nz;
-        float[] rb = rootBox;
-        if (!(slabs(rb, 0, nx, ny, nz, fx, fy, fz, ox, oy, oz, ix, iy, iz, tMin, best) <= Double.MAX_VALUE)) {
+        if (!(slabs(rootBox, 0, nx, ny, nz, fx, fy, fz, ox, oy, oz, ix, iy, iz, tMin, best) <= Double.MAX_VALUE)) {
             return hit != -1;
         }
         double[] k = ctx.rayKernel;
-        Triangle.setupRay(ray, k);
-        int kx = (int) k[0], ky = (int) k[1], kz = (int) k[2];
-        double sx = k[3], sy = k[4], sz = k[5], okx = k[6], oky = k[7], okz = k[8];
+        // the watertight triangle test's per-ray set-up, made when the first triangle is tested
+        boolean setUp = false;
+        int kx = 0, ky = 0, kz = 0;
+        double sx = 0, sy = 0, sz = 0, okx = 0, oky = 0, okz = 0;
         float[] nb = nodeBox;
         int[] nc = nodeChild, pr = prims;
         double[] tv = tris, sv = spheres;
@@ -183,19 +183,31 @@ public final class Bvh implements Accelerator {
         int sp = 0, ref = root;
         while (true) {
             if (ref >= 0) {
-                // inner node: test both children, go to the nearer, keep the farther
+                // inner node: test both children (slabs(), written out: C1 would not inline it), go to
+                // the nearer, keep the farther with its entry distance
                 int o = 12 * ref;
-                double t0 = slabs(nb, o, nx, ny, nz, fx, fy, fz, ox, oy, oz, ix, iy, iz, tMin, best);
-                double t1 = slabs(nb, o + 6, nx, ny, nz, fx, fy, fz, ox, oy, oz, ix, iy, iz, tMin, best);
-                boolean h0 = t0 <= Double.MAX_VALUE, h1 = t1 <= Double.MAX_VALUE;
+                double lo0 = tMin, hi0 = best, lo1 = tMin, hi1 = best, t;
+                t = (nb[o + nx] - ox) * ix; if (t > lo0) lo0 = t;
+                t = (nb[o + fx] - ox) * ix; if (t < hi0) hi0 = t;
+                t = (nb[o + ny] - oy) * iy; if (t > lo0) lo0 = t;
+                t = (nb[o + fy] - oy) * iy; if (t < hi0) hi0 = t;
+                t = (nb[o + nz] - oz) * iz; if (t > lo0) lo0 = t;
+                t = (nb[o + fz] - oz) * iz; if (t < hi0) hi0 = t;
+                t = (nb[o + 6 + nx] - ox) * ix; if (t > lo1) lo1 = t;
+                t = (nb[o + 6 + fx] - ox) * ix; if (t < hi1) hi1 = t;
+                t = (nb[o + 6 + ny] - oy) * iy; if (t > lo1) lo1 = t;
+                t = (nb[o + 6 + fy] - oy) * iy; if (t < hi1) hi1 = t;
+                t = (nb[o + 6 + nz] - oz) * iz; if (t > lo1) lo1 = t;
+                t = (nb[o + 6 + fz] - oz) * iz; if (t < hi1) hi1 = t;
+                boolean h0 = lo0 <= hi0 * SLAB_SLACK, h1 = lo1 <= hi1 * SLAB_SLACK;
                 if (h0 && h1) {
-                    if (t1 < t0) {
+                    if (lo1 < lo0) {
                         stack[sp] = nc[2 * ref];
-                        stackT[sp++] = t0;
+                        stackT[sp++] = lo0;
                         ref = nc[2 * ref + 1];
                     } else {
                         stack[sp] = nc[2 * ref + 1];
-                        stackT[sp++] = t1;
+                        stackT[sp++] = lo1;
                         ref = nc[2 * ref];
                     }
                     continue;
@@ -212,9 +224,39 @@ public final class Bvh implements Accelerator {
                     int p = pr[i], idx = p >>> 2;
                     switch (p & 3) {
                         case TRI: {
-                            double t = triangleT(tv, 9 * idx, kx, ky, kz, sx, sy, sz, okx, oky, okz, tMin, best);
-                            if (t < best || (t == best && i < hitSlot)) {
-                                best = t;
+                            if (!setUp) {
+                                Triangle.setupRay(ray, k);
+                                kx = (int) k[0]; ky = (int) k[1]; kz = (int) k[2];
+                                sx = k[3]; sy = k[4]; sz = k[5]; okx = k[6]; oky = k[7]; okz = k[8];
+                                setUp = true;
+                            }
+                            // Triangle.hit, written out with the set-up in locals: the same operations
+                            // in the same order, so the same t
+                            int v = 9 * idx;
+                            double ax = tv[v + kx] - okx, ay = tv[v + ky] - oky, az = tv[v + kz] - okz;
+                            double bx = tv[v + 3 + kx] - okx, by = tv[v + 3 + ky] - oky, bz = tv[v + 3 + kz] - okz;
+                            double cx = tv[v + 6 + kx] - okx, cy = tv[v + 6 + ky] - oky, cz = tv[v + 6 + kz] - okz;
+                            ax -= sx * az; ay -= sy * az;
+                            bx -= sx * bz; by -= sy * bz;
+                            cx -= sx * cz; cy -= sy * cz;
+                            double u = cx * by - cy * bx;
+                            double w0 = ax * cy - ay * cx;
+                            double w1 = bx * ay - by * ax;
+                            if (u < 0 || w0 < 0 || w1 < 0) {
+                                break;
+                            }
+                            double det = u + w0 + w1;
+                            if (!(det > 0)) {
+                                break;
+                            }
+                            double tScaled = sz * (u * az + w0 * bz + w1 * cz);
+                            if (tScaled < tMin * det || tScaled > best * det) {
+                                break;
+                            }
+                            double inv = 1 / det;
+                            double th = tScaled * inv;
+                            if (th < best || (th == best && i < hitSlot)) {
+                                best = th;
                                 hit = p;
                                 hitSlot = i;
                             }
@@ -222,10 +264,10 @@ public final class Bvh implements Accelerator {
                         }
                         case SPHERE: {
                             int so = 4 * idx;
-                            double t = Sphere.hit(sv[so], sv[so + 1], sv[so + 2], sv[so + 3],
+                            double th = Sphere.hit(sv[so], sv[so + 1], sv[so + 2], sv[so + 3],
                                     ox, oy, oz, dx, dy, dz, tMin, best);
-                            if (t < best || (t == best && i < hitSlot)) {
-                                best = t;
+                            if (th < best || (th == best && i < hitSlot)) {
+                                best = th;
                                 hit = p;
                                 hitSlot = i;
                             }
@@ -253,9 +295,7 @@ public final class Bvh implements Accelerator {
 
     /**
      * A user surface's own test over [ray.tMin, best]; on a hit the record is filled and its normal
-     * made to face the ray. The ray's tMax is restored even if the surface throws. Kept out of
-     * closestHit on purpose: on JDK 17.0.15, closestHit with this try/finally inside, loaded from the
-     * launcher's dynamic CDS archive, was never JIT-compiled again (15x slower; docs/performance.md).
+     * made to face the ray. The ray's tMax is restored even if the surface throws.
      */
     private boolean userHit(Surface s, Ray ray, double best, IntersectionRecord rec) {
         double saved = ray.tMax;
@@ -327,9 +367,9 @@ public final class Bvh implements Accelerator {
             return false;
         }
         double[] k = ctx.rayKernel;
-        Triangle.setupRay(ray, k);
-        int kx = (int) k[0], ky = (int) k[1], kz = (int) k[2];
-        double sx = k[3], sy = k[4], sz = k[5], okx = k[6], oky = k[7], okz = k[8];
+        boolean setUp = false;
+        int kx = 0, ky = 0, kz = 0;
+        double sx = 0, sy = 0, sz = 0, okx = 0, oky = 0, okz = 0;
         float[] nb = nodeBox;
         int[] nc = nodeChild, pr = prims;
         double[] tv = tris, sv = spheres;
@@ -338,8 +378,20 @@ public final class Bvh implements Accelerator {
         while (true) {
             if (ref >= 0) {
                 int o = 12 * ref;
-                boolean h0 = slabs(nb, o, nx, ny, nz, fx, fy, fz, ox, oy, oz, ix, iy, iz, tMin, tMax) <= Double.MAX_VALUE;
-                boolean h1 = slabs(nb, o + 6, nx, ny, nz, fx, fy, fz, ox, oy, oz, ix, iy, iz, tMin, tMax) <= Double.MAX_VALUE;
+                double lo0 = tMin, hi0 = tMax, lo1 = tMin, hi1 = tMax, t;
+                t = (nb[o + nx] - ox) * ix; if (t > lo0) lo0 = t;
+                t = (nb[o + fx] - ox) * ix; if (t < hi0) hi0 = t;
+                t = (nb[o + ny] - oy) * iy; if (t > lo0) lo0 = t;
+                t = (nb[o + fy] - oy) * iy; if (t < hi0) hi0 = t;
+                t = (nb[o + nz] - oz) * iz; if (t > lo0) lo0 = t;
+                t = (nb[o + fz] - oz) * iz; if (t < hi0) hi0 = t;
+                t = (nb[o + 6 + nx] - ox) * ix; if (t > lo1) lo1 = t;
+                t = (nb[o + 6 + fx] - ox) * ix; if (t < hi1) hi1 = t;
+                t = (nb[o + 6 + ny] - oy) * iy; if (t > lo1) lo1 = t;
+                t = (nb[o + 6 + fy] - oy) * iy; if (t < hi1) hi1 = t;
+                t = (nb[o + 6 + nz] - oz) * iz; if (t > lo1) lo1 = t;
+                t = (nb[o + 6 + fz] - oz) * iz; if (t < hi1) hi1 = t;
+                boolean h0 = lo0 <= hi0 * SLAB_SLACK, h1 = lo1 <= hi1 * SLAB_SLACK;
                 if (h0) {
                     if (h1) {
                         stack[sp++] = nc[2 * ref + 1];
@@ -355,21 +407,46 @@ public final class Bvh implements Accelerator {
                 for (int i = leaf >>> 4, end = i + (leaf & 15); i < end; i++) {
                     int p = pr[i], idx = p >>> 2;
                     switch (p & 3) {
-                        case TRI:
-                            if (triangleT(tv, 9 * idx, kx, ky, kz, sx, sy, sz, okx, oky, okz, tMin, tMax) <= tMax) {
-                                return true;
+                        case TRI: {
+                            if (!setUp) {
+                                Triangle.setupRay(ray, k);
+                                kx = (int) k[0]; ky = (int) k[1]; kz = (int) k[2];
+                                sx = k[3]; sy = k[4]; sz = k[5]; okx = k[6]; oky = k[7]; okz = k[8];
+                                setUp = true;
                             }
-                            break;
+                            int v = 9 * idx;
+                            double ax = tv[v + kx] - okx, ay = tv[v + ky] - oky, az = tv[v + kz] - okz;
+                            double bx = tv[v + 3 + kx] - okx, by = tv[v + 3 + ky] - oky, bz = tv[v + 3 + kz] - okz;
+                            double cx = tv[v + 6 + kx] - okx, cy = tv[v + 6 + ky] - oky, cz = tv[v + 6 + kz] - okz;
+                            ax -= sx * az; ay -= sy * az;
+                            bx -= sx * bz; by -= sy * bz;
+                            cx -= sx * cz; cy -= sy * cz;
+                            double u = cx * by - cy * bx;
+                            double w0 = ax * cy - ay * cx;
+                            double w1 = bx * ay - by * ax;
+                            if (u < 0 || w0 < 0 || w1 < 0) {
+                                break;
+                            }
+                            double det = u + w0 + w1;
+                            if (!(det > 0)) {
+                                break;
+                            }
+                            double tScaled = sz * (u * az + w0 * bz + w1 * cz);
+                            if (tScaled < tMin * det || tScaled > tMax * det) {
+                                break;
+                            }
+                            return true;
+                        }
                         case SPHERE: {
                             int so = 4 * idx;
-                            double t = Sphere.hit(sv[so], sv[so + 1], sv[so + 2], sv[so + 3], ox, oy, oz, dx, dy, dz, tMin, tMax);
-                            if (t == t) {
+                            double th = Sphere.hit(sv[so], sv[so + 1], sv[so + 2], sv[so + 3], ox, oy, oz, dx, dy, dz, tMin, tMax);
+                            if (th == th) {
                                 return true;
                             }
                             break;
                         }
                         default:
-                            if (others[idx].intersects(ray, ctx.scratchRecord, scene)) {
+                            if (others[idx].intersects(ray, scratch, scene)) {
                                 return true;
                             }
                     }
@@ -380,36 +457,6 @@ public final class Bvh implements Accelerator {
             }
             ref = stack[--sp];
         }
-    }
-
-    /**
-     * {@link Triangle#hit} with the ray set-up in locals: the same operations in the same order, so
-     * the same t (or NaN). Barycentrics are not stored; {@link #finish} recomputes them for the winner.
-     */
-    private static double triangleT(double[] v, int off, int kx, int ky, int kz, double sx, double sy, double sz,
-                                    double ox, double oy, double oz, double tMin, double tMax) {
-        double ax = v[off + kx] - ox, ay = v[off + ky] - oy, az = v[off + kz] - oz;
-        double bx = v[off + 3 + kx] - ox, by = v[off + 3 + ky] - oy, bz = v[off + 3 + kz] - oz;
-        double cx = v[off + 6 + kx] - ox, cy = v[off + 6 + ky] - oy, cz = v[off + 6 + kz] - oz;
-        ax -= sx * az; ay -= sy * az;
-        bx -= sx * bz; by -= sy * bz;
-        cx -= sx * cz; cy -= sy * cz;
-        double u = cx * by - cy * bx;
-        double w0 = ax * cy - ay * cx;
-        double w1 = bx * ay - by * ax;
-        if (u < 0 || w0 < 0 || w1 < 0) {
-            return Double.NaN;
-        }
-        double det = u + w0 + w1;
-        if (!(det > 0)) {
-            return Double.NaN;
-        }
-        double tScaled = sz * (u * az + w0 * bz + w1 * cz);
-        if (tScaled < tMin * det || tScaled > tMax * det) {
-            return Double.NaN;
-        }
-        double inv = 1 / det;
-        return tScaled * inv;
     }
 
     /**

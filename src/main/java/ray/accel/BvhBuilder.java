@@ -8,7 +8,9 @@ import java.util.concurrent.RecursiveTask;
  * {@value #BINS} buckets per axis (Wald, "On fast Construction of SAH-based Bounding Volume
  * Hierarchies", 2007): O(n log n) time. One pass over a node's primitives bins all three axes at
  * once; the split's two child boxes come out of the bins, the children's centroid bounds out of the
- * partition pass, so each level reads every primitive twice. Subtrees with more than
+ * partition pass, so each level reads every primitive twice, in order: the partition moves the
+ * primitives' boxes and centroids along with their ids, so both passes stream through memory
+ * instead of following an index into it. Subtrees with more than
  * {@value #PARALLEL_MIN} primitives are built in parallel (fork/join); the result does not depend on
  * the thread count.
  *
@@ -33,8 +35,8 @@ final class BvhBuilder {
     /** Largest number of primitives a leaf reference can address. */
     static final int MAX_PRIMITIVES = 1 << 27;
 
-    final float[] primBox;     // 6 per primitive, rounded outward
-    final float[] centroid;    // 3 per primitive
+    final float[] primBox;     // 6 per slot, rounded outward; moved with the slot's primitive
+    final float[] centroid;    // 3 per slot
     final int[] order;         // primitive ids in leaf (slot) order
     final int count;
 
@@ -125,7 +127,7 @@ final class BvhBuilder {
         final int[] rightCount = new int[BINS];
         final float[] acc = new float[6];
         // result of the last split search
-        int axis, bin;
+        int axis, bin, bins;
         float cost;
     }
 
@@ -155,7 +157,7 @@ final class BvhBuilder {
     }
 
     /**
-     * Builds the subtree over order[start, end) with box {@code box} and centroid bounds {@code cent};
+     * Builds the subtree over slots [start, end) with box {@code box} and centroid bounds {@code cent};
      * returns its reference (a node index in {@code out}, or a leaf).
      */
     int build(int start, int end, float[] box, float[] cent, int depth, Nodes out, Scratch s) {
@@ -208,41 +210,64 @@ final class BvhBuilder {
     }
 
     /** Bin index of a centroid coordinate; the same arithmetic in binning and partitioning. */
-    private static int binOf(float c, float lo, float scale) {
+    private static int binOf(float c, float lo, float scale, int bins) {
         int b = (int) ((c - lo) * scale);
-        return b < 0 ? 0 : b >= BINS ? BINS - 1 : b;
+        return b < 0 ? 0 : b >= bins ? bins - 1 : b;
     }
 
     /** Finds the cheapest binned SAH split over all axes into {@code s}; false when there is none. */
     private boolean findSplit(int start, int end, float[] cent, Scratch s) {
         int[] cnt = s.binCount;
         float[] bb = s.binBox;
-        Arrays.fill(cnt, 0);
+        // small nodes get fewer bins: the fixed cost of a search (clearing and sweeping the bins) would
+        // otherwise dominate, there being about as many small nodes as primitives
+        int nb = Math.min(BINS, Math.max(2, end - start));
+        s.bins = nb;
         for (int i = 0; i < 3 * BINS; i++) {
+            if (i % BINS >= nb) {
+                continue;
+            }
+            cnt[i] = 0;
             int o = 6 * i;
             bb[o] = bb[o + 1] = bb[o + 2] = Float.POSITIVE_INFINITY;
             bb[o + 3] = bb[o + 4] = bb[o + 5] = Float.NEGATIVE_INFINITY;
         }
         float lx = cent[0], ly = cent[1], lz = cent[2];
         float ex = cent[3] - lx, ey = cent[4] - ly, ez = cent[5] - lz;
-        float sx = ex > 0 ? BINS * 0.99999f / ex : 0, sy = ey > 0 ? BINS * 0.99999f / ey : 0, sz = ez > 0 ? BINS * 0.99999f / ez : 0;
+        float sx = ex > 0 ? nb * 0.99999f / ex : 0, sy = ey > 0 ? nb * 0.99999f / ey : 0, sz = ez > 0 ? nb * 0.99999f / ez : 0;
         if (sx == 0 && sy == 0 && sz == 0) {
             return false;
         }
         float[] pb = primBox, pc = centroid;
-        int[] ord = order;
-        // one pass bins all three axes
+        // one pass bins all three axes (the box growing written out: C1 would not inline it)
         for (int i = start; i < end; i++) {
-            int p = ord[i];
-            int bx = binOf(pc[3 * p], lx, sx), by = BINS + binOf(pc[3 * p + 1], ly, sy), bz = 2 * BINS + binOf(pc[3 * p + 2], lz, sz);
+            int q = 6 * i, c = 3 * i;
+            float x0 = pb[q], y0 = pb[q + 1], z0 = pb[q + 2], x1 = pb[q + 3], y1 = pb[q + 4], z1 = pb[q + 5];
+            int bx = binOf(pc[c], lx, sx, nb), by = BINS + binOf(pc[c + 1], ly, sy, nb), bz = 2 * BINS + binOf(pc[c + 2], lz, sz, nb);
             cnt[bx]++;
             cnt[by]++;
             cnt[bz]++;
-            int q = 6 * p;
-            float x0 = pb[q], y0 = pb[q + 1], z0 = pb[q + 2], x1 = pb[q + 3], y1 = pb[q + 4], z1 = pb[q + 5];
-            grow(bb, 6 * bx, x0, y0, z0, x1, y1, z1);
-            grow(bb, 6 * by, x0, y0, z0, x1, y1, z1);
-            grow(bb, 6 * bz, x0, y0, z0, x1, y1, z1);
+            int o = 6 * bx;
+            if (x0 < bb[o]) bb[o] = x0;
+            if (y0 < bb[o + 1]) bb[o + 1] = y0;
+            if (z0 < bb[o + 2]) bb[o + 2] = z0;
+            if (x1 > bb[o + 3]) bb[o + 3] = x1;
+            if (y1 > bb[o + 4]) bb[o + 4] = y1;
+            if (z1 > bb[o + 5]) bb[o + 5] = z1;
+            o = 6 * by;
+            if (x0 < bb[o]) bb[o] = x0;
+            if (y0 < bb[o + 1]) bb[o + 1] = y0;
+            if (z0 < bb[o + 2]) bb[o + 2] = z0;
+            if (x1 > bb[o + 3]) bb[o + 3] = x1;
+            if (y1 > bb[o + 4]) bb[o + 4] = y1;
+            if (z1 > bb[o + 5]) bb[o + 5] = z1;
+            o = 6 * bz;
+            if (x0 < bb[o]) bb[o] = x0;
+            if (y0 < bb[o + 1]) bb[o + 1] = y0;
+            if (z0 < bb[o + 2]) bb[o + 2] = z0;
+            if (x1 > bb[o + 3]) bb[o + 3] = x1;
+            if (y1 > bb[o + 4]) bb[o + 4] = y1;
+            if (z1 > bb[o + 5]) bb[o + 5] = z1;
         }
         float best = Float.POSITIVE_INFINITY;
         int bestAxis = -1, bestBin = -1;
@@ -255,7 +280,7 @@ final class BvhBuilder {
             // sweep from the right, then from the left
             empty(acc);
             int c = 0;
-            for (int i = BINS - 1; i > 0; i--) {
+            for (int i = nb - 1; i > 0; i--) {
                 growBox(acc, bb, 6 * (base + i));
                 c += cnt[base + i];
                 s.rightArea[i] = c > 0 ? area(acc) : 0;
@@ -263,7 +288,7 @@ final class BvhBuilder {
             }
             empty(acc);
             c = 0;
-            for (int i = 0; i < BINS - 1; i++) {
+            for (int i = 0; i < nb - 1; i++) {
                 growBox(acc, bb, 6 * (base + i));
                 c += cnt[base + i];
                 int r = s.rightCount[i + 1];
@@ -284,7 +309,7 @@ final class BvhBuilder {
         // the parent's box is the union of any axis's bins
         empty(acc);
         int base = bestAxis * BINS;
-        for (int i = 0; i < BINS; i++) {
+        for (int i = 0; i < nb; i++) {
             growBox(acc, bb, 6 * (base + i));
         }
         float parentArea = area(acc);
@@ -295,47 +320,71 @@ final class BvhBuilder {
     }
 
     /**
-     * Partitions order[start, end) at the split in {@code s}; fills the children's boxes (from the
+     * Partitions slots [start, end) at the split in {@code s}; fills the children's boxes (from the
      * bins) and centroid bounds (from the pass). Returns the first index of the right child.
      */
     private int partition(int start, int end, float[] cent, Scratch s, float[] lb, float[] rb, float[] lc, float[] rc) {
         int axis = s.axis, split = s.bin;
         float lo = cent[axis], ext = cent[3 + axis] - lo;
-        float scale = BINS * 0.99999f / ext;
+        int nb = s.bins;
+        float scale = nb * 0.99999f / ext;
         float[] bb = s.binBox;
         empty(lb);
         empty(rb);
-        for (int i = 0; i < BINS; i++) {
+        for (int i = 0; i < nb; i++) {
             growBox(i <= split ? lb : rb, bb, 6 * (axis * BINS + i));
         }
-        empty(lc);
-        empty(rc);
-        float[] pc = centroid;
+        float[] pc = centroid, pb = primBox;
         int[] ord = order;
+        float lcx0 = Float.POSITIVE_INFINITY, lcy0 = lcx0, lcz0 = lcx0, lcx1 = Float.NEGATIVE_INFINITY, lcy1 = lcx1, lcz1 = lcx1;
+        float rcx0 = lcx0, rcy0 = lcx0, rcz0 = lcx0, rcx1 = lcx1, rcy1 = lcx1, rcz1 = lcx1;
         int i = start, j = end - 1;
         while (i <= j) {
-            int p = ord[i];
-            float c = pc[3 * p + axis];
-            if (binOf(c, lo, scale) <= split) {
-                growPoint(lc, pc, 3 * p);
+            float cx = pc[3 * i], cy = pc[3 * i + 1], cz = pc[3 * i + 2];
+            if (binOf(axis == 0 ? cx : axis == 1 ? cy : cz, lo, scale, nb) <= split) {
+                if (cx < lcx0) lcx0 = cx;
+                if (cy < lcy0) lcy0 = cy;
+                if (cz < lcz0) lcz0 = cz;
+                if (cx > lcx1) lcx1 = cx;
+                if (cy > lcy1) lcy1 = cy;
+                if (cz > lcz1) lcz1 = cz;
                 i++;
             } else {
-                growPoint(rc, pc, 3 * p);
+                if (cx < rcx0) rcx0 = cx;
+                if (cy < rcy0) rcy0 = cy;
+                if (cz < rcz0) rcz0 = cz;
+                if (cx > rcx1) rcx1 = cx;
+                if (cy > rcy1) rcy1 = cy;
+                if (cz > rcz1) rcz1 = cz;
+                // swap slots i and j: id, box and centroid
+                int t = ord[i];
                 ord[i] = ord[j];
-                ord[j--] = p;
+                ord[j] = t;
+                for (int k = 0; k < 6; k++) {
+                    float f = pb[6 * i + k];
+                    pb[6 * i + k] = pb[6 * j + k];
+                    pb[6 * j + k] = f;
+                }
+                for (int k = 0; k < 3; k++) {
+                    float f = pc[3 * i + k];
+                    pc[3 * i + k] = pc[3 * j + k];
+                    pc[3 * j + k] = f;
+                }
+                j--;
             }
         }
+        lc[0] = lcx0; lc[1] = lcy0; lc[2] = lcz0; lc[3] = lcx1; lc[4] = lcy1; lc[5] = lcz1;
+        rc[0] = rcx0; rc[1] = rcy0; rc[2] = rcz0; rc[3] = rcx1; rc[4] = rcy1; rc[5] = rcz1;
         return i;
     }
 
-    /** Box and centroid bounds of order[start, end). */
+    /** Box and centroid bounds of slots [start, end). */
     private void bounds(int start, int end, float[] box, float[] cent) {
         empty(box);
         empty(cent);
         for (int i = start; i < end; i++) {
-            int p = order[i];
-            growBox(box, primBox, 6 * p);
-            growPoint(cent, centroid, 3 * p);
+            growBox(box, primBox, 6 * i);
+            growPoint(cent, centroid, 3 * i);
         }
     }
 

@@ -179,8 +179,22 @@ public final class Bench {
 
     // ---- scenes ----
 
-    /** The directory holding all four scenes; generates them (mesh100k is not kept in the repository) when needed. */
     private Path sceneDirectory() throws IOException, InterruptedException {
+        return sceneDirectory(benchDir, work, scenes, out);
+    }
+
+    /** The default work directory: raytracer-bench in the temporary directory. */
+    public static Path defaultWork() {
+        return Path.of(System.getProperty("java.io.tmpdir"), "raytracer-bench");
+    }
+
+    /**
+     * The directory holding the named benchmark scenes: the bench directory's scenes/, or {@code work}/scenes,
+     * where they are generated with the bench's gen/make_scenes.py (mesh100k.txt is not kept in the
+     * repository) when missing.
+     */
+    public static Path sceneDirectory(Path benchDir, Path work, List<String> scenes, PrintStream out)
+            throws IOException, InterruptedException {
         Path shared = benchDir.resolve("scenes");
         if (scenes.stream().allMatch(s -> Files.isRegularFile(shared.resolve(s + ".txt")))) {
             return shared;
@@ -298,9 +312,24 @@ public final class Bench {
 
     // ---- the child's --stats line ----
 
-    /** What one render reported with --stats. */
-    record Stats(double parse, double build, double render, double write, long camera, long shadow, long mirror,
-                 long peakMiB, double bvhBytes, double cpu) {
+    /** What one render reported with --stats. (Not a record: Gradle 4.4.1's class reader calls those malformed.) */
+    static final class Stats {
+        final double parse, build, render, write, bvhBytes, cpu;
+        final long camera, shadow, mirror, peakMiB;
+
+        Stats(double parse, double build, double render, double write, long camera, long shadow, long mirror,
+              long peakMiB, double bvhBytes, double cpu) {
+            this.parse = parse;
+            this.build = build;
+            this.render = render;
+            this.write = write;
+            this.camera = camera;
+            this.shadow = shadow;
+            this.mirror = mirror;
+            this.peakMiB = peakMiB;
+            this.bvhBytes = bvhBytes;
+            this.cpu = cpu;
+        }
 
         private static final Pattern LINE = Pattern.compile(
                 "parse ([0-9.]+) s, build ([0-9.]+) s, render ([0-9.]+) s, write ([0-9.]+) s; ([0-9,]+) camera, ([0-9,]+) shadow, "

@@ -40,8 +40,46 @@ public final class Throughput {
         }
     }
 
-    /** Rays per second of one ray set: median and best pass, and the median per CPU second. */
-    public record Rate(Kind kind, String query, int rays, double medianSeconds, double bestSeconds, int hits, double cpuSeconds) {
+    /**
+     * Rays per second of one ray set: median and best pass, and the median per CPU second. (A plain
+     * class, not a record: Gradle 4.4.1's class reader calls record classes malformed.)
+     */
+    public static final class Rate {
+        private final Kind kind;
+        private final String query;
+        private final int rays, hits;
+        private final double medianSeconds, bestSeconds, cpuSeconds;
+
+        Rate(Kind kind, String query, int rays, double medianSeconds, double bestSeconds, int hits, double cpuSeconds) {
+            this.kind = kind;
+            this.query = query;
+            this.rays = rays;
+            this.medianSeconds = medianSeconds;
+            this.bestSeconds = bestSeconds;
+            this.hits = hits;
+            this.cpuSeconds = cpuSeconds;
+        }
+
+        public Kind kind() {
+            return kind;
+        }
+
+        public String query() {
+            return query;
+        }
+
+        public int rays() {
+            return rays;
+        }
+
+        public int hits() {
+            return hits;
+        }
+
+        public double cpuSeconds() {
+            return cpuSeconds;
+        }
+
         public double mraysPerSecond() {
             return rays / medianSeconds / 1e6;
         }

@@ -43,8 +43,8 @@ public final class Parser {
     private final Scene scene = new Scene();
     private final Map<String, Object> named = new HashMap<>();
     private final Map<String, Integer> globalLines = new HashMap<>();
-    /** Header "type ClassName" to its class, and classes to constructors: resolved once per file. */
-    private final Map<String, Class<?>> resolved = new HashMap<>();
+    /** Header type to class name to class, and classes to constructors: resolved once per file. */
+    private final Map<String, Map<String, Class<?>>> resolved = new HashMap<>();
     private final Map<Class<?>, Constructor<?>> constructors = new HashMap<>();
     private final List<String> warnings = new ArrayList<>();
 
@@ -88,6 +88,17 @@ public final class Parser {
 
     /** Parses a scene file's bytes (UTF-8 text); {@code name} is used in messages. */
     public static Scene parse(byte[] bytes, String name, List<String> warnings) throws SceneFormatException {
+        // The common case first: plain ASCII. Decoding with replacement gives as many chars as bytes and
+        // no U+FFFD only when every byte is ASCII (a multi-byte sequence gives fewer chars, a malformed
+        // one U+FFFD); both checks are vectorised in the JDK, where the strict decoder below is not.
+        String ascii = new String(bytes, StandardCharsets.UTF_8);
+        if (ascii.length() == bytes.length && ascii.indexOf('\uFFFD') < 0) {
+            int nul = ascii.indexOf(0);
+            if (nul >= 0) {
+                throw new SceneFormatException(name, lineOf(bytes, nul), "binary data (a NUL byte) in what should be a text scene file");
+            }
+            return parse(ascii, bytes, name, warnings);
+        }
         for (int i = 0; i < bytes.length; i++) {
             if (bytes[i] == 0) {
                 throw new SceneFormatException(name, lineOf(bytes, i), "binary data (a NUL byte) in what should be a text scene file");
@@ -105,9 +116,14 @@ public final class Parser {
 
     /** Parses scene text; {@code name} is used in messages. */
     public static Scene parse(String text, String name, List<String> warnings) throws SceneFormatException {
+        return parse(text, null, name, warnings);
+    }
+
+    /** {@code ascii}: the text's bytes when it is plain ASCII (one byte per char), for the fast path; else null. */
+    private static Scene parse(String text, byte[] ascii, String name, List<String> warnings) throws SceneFormatException {
         Parser p = new Parser(name);
         try {
-            Scene s = p.run(text);
+            Scene s = p.run(text, ascii);
             warnings.addAll(p.warnings);
             return s;
         } catch (StackOverflowError | OutOfMemoryError e) {
@@ -126,7 +142,7 @@ public final class Parser {
         return n;
     }
 
-    private Scene run(String text) throws SceneFormatException {
+    private Scene run(String text, byte[] ascii) throws SceneFormatException {
         int pos = 0, len = text.length();
         boolean any = false;
         while (pos < len || (pos == len && line == 0)) {
@@ -137,6 +153,11 @@ public final class Parser {
             line++;
             if (end - pos > Limits.MAX_LINE) {
                 throw error("line is " + (end - pos) + " characters long (at most " + Limits.MAX_LINE + " expected)");
+            }
+            if (ascii != null && fastLine(ascii, pos, end)) {
+                any |= end > pos;
+                pos = end + 1;
+                continue;
             }
             String raw = text.substring(pos, end);
             pos = end + 1;
@@ -193,6 +214,173 @@ public final class Parser {
         }
     }
 
+    // ---- the fast path: plain lines of an ASCII file, read from its bytes ----
+
+    private static final String[] HEADS = {"Vector3d", "double", "ref"};
+    private static final String[] BASES = {"Surface", "Material", "Light", "Camera"};
+
+    /** Per class: the field names seen on plain lines, as bytes, with their Field. */
+    private final Map<Class<?>, List<Object[]>> fastFields = new HashMap<>();
+    /** The last plain words looked up: a header's class name, a ref's object name (a name never changes its object). */
+    private byte[] lastClassBytes, lastRefBytes;
+    private String lastClassName, lastRefName;
+    private Object lastRefTarget;
+
+    /**
+     * Reads line [from, to) of an ASCII file straight from its bytes when it is one of the three kinds
+     * a large scene consists of, written plainly (printable ASCII, single spaces, no comment, nothing to
+     * strip): a blank line, an object header of two words, or a Vector3d, double or ref parameter of
+     * the current object. Returns false, having changed nothing, for any other line and for any line
+     * with a mistake: the general path then reads it and gives the same result or the same message.
+     * It does what {@link #statement} would do with the same words, without a String per word.
+     */
+    private boolean fastLine(byte[] b, int from, int to) throws SceneFormatException {
+        if (from == to) {
+            endObject();        // a blank line ends the object
+            return true;
+        }
+        if (b[from] == ' ' || b[to - 1] == ' ') {
+            return false;
+        }
+        int s1 = -1, s2 = -1;
+        for (int i = from; i < to; i++) {
+            byte c = b[i];
+            if (c == ' ') {
+                if (b[i - 1] == ' ') {
+                    return false;
+                }
+                if (s1 < 0) {
+                    s1 = i;
+                } else if (s2 < 0) {
+                    s2 = i;
+                }
+            } else if (c < 0x21 || c > 0x7E || c == '#') {
+                return false;
+            }
+        }
+        if (s1 < 0) {
+            return false;
+        }
+        if (s2 < 0) {
+            // two words: a header "Surface Triangle"
+            for (String base : BASES) {
+                if (equals(b, from, s1, base)) {
+                    if (lastClassBytes == null || !equals(b, s1 + 1, to, lastClassBytes)) {
+                        lastClassBytes = java.util.Arrays.copyOfRange(b, s1 + 1, to);
+                        lastClassName = new String(lastClassBytes, StandardCharsets.ISO_8859_1);
+                    }
+                    endObject();
+                    header(new String[] {base, lastClassName});
+                    return true;
+                }
+            }
+            return false;
+        }
+        if (current == null) {
+            return false;
+        }
+        String head = null;
+        for (String h : HEADS) {
+            if (equals(b, from, s1, h)) {
+                head = h;
+            }
+        }
+        if (head == null) {
+            return false;
+        }
+        Object[] field = fastField(b, s1 + 1, s2);
+        if (field == null || currentFields.contains((String) field[1])) {
+            return false;
+        }
+        String fieldName = (String) field[1];
+        Field f = (Field) field[2];
+        Class<?> ft = f.getType();
+        int v0 = s2 + 1;
+        Object v;
+        if (head == HEADS[0]) {                                  // Vector3d
+            if (!ft.isAssignableFrom(Vector3d.class)) {
+                return false;
+            }
+            double[] xyz = Tokens.canonicalVector(b, v0, to);
+            if (xyz == null) {
+                return false;
+            }
+            v = new Vector3d(xyz[0], xyz[1], xyz[2]);
+        } else if (head == HEADS[1]) {                           // double
+            if (!(ft == double.class || ft == Double.class || ft == float.class || ft == Float.class)
+                    || !Tokens.isDecimal(b, v0, to)) {
+                return false;
+            }
+            double d = Tokens.parseDecimal(b, v0, to);
+            if (!Double.isFinite(d)) {
+                return false;
+            }
+            v = (ft == float.class || ft == Float.class) ? (Object) (float) d : (Object) d;
+        } else {                                                 // ref: one word, a name defined earlier
+            if (ft.isPrimitive() || ft == String.class) {
+                return false;
+            }
+            if (lastRefBytes == null || !equals(b, v0, to, lastRefBytes)) {
+                String name = new String(b, v0, to - v0, StandardCharsets.ISO_8859_1);
+                Object target = named.get(name);
+                if (target == null) {
+                    return false;
+                }
+                lastRefBytes = java.util.Arrays.copyOfRange(b, v0, to);
+                lastRefName = name;
+                lastRefTarget = target;
+            }
+            if (!ft.isInstance(lastRefTarget)) {
+                return false;
+            }
+            v = lastRefTarget;
+        }
+        currentFields.add(fieldName);
+        try {
+            f.set(current, v);
+        } catch (IllegalAccessException | RuntimeException e) {
+            throw error("cannot set field '" + fieldName + "': " + describe(e));
+        }
+        return true;
+    }
+
+    /** {bytes, name, Field} of the current object's field named by b[from, to), or null if it has none (the general path reports it). */
+    private Object[] fastField(byte[] b, int from, int to) {
+        Class<?> c = current.getClass();
+        List<Object[]> known = fastFields.computeIfAbsent(c, k -> new ArrayList<>());
+        for (Object[] e : known) {
+            if (equals(b, from, to, (byte[]) e[0])) {
+                return e;
+            }
+        }
+        String name = new String(b, from, to - from, StandardCharsets.ISO_8859_1);
+        Field f;
+        try {
+            f = fields.find(c, name);
+        } catch (ClassResolver.Problem p) {
+            return null;
+        }
+        Object[] e = {java.util.Arrays.copyOfRange(b, from, to), name, f};
+        known.add(e);
+        return e;
+    }
+
+    private static boolean equals(byte[] b, int from, int to, String s) {
+        if (to - from != s.length()) {
+            return false;
+        }
+        for (int i = 0; i < s.length(); i++) {
+            if (b[from + i] != s.charAt(i)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private static boolean equals(byte[] b, int from, int to, byte[] w) {
+        return java.util.Arrays.equals(b, from, to, w, 0, w.length);
+    }
+
     // ---- objects ----
 
     private void header(String[] tok) throws SceneFormatException {
@@ -205,14 +393,15 @@ public final class Parser {
         if (rest.length > 1) {
             throw error("too many words in the header (expected '" + type + " <ClassName> [name]')");
         }
-        Class<?> c = resolved.get(type + ' ' + tok[1]);
+        Map<String, Class<?>> ofType = resolved.computeIfAbsent(type, k -> new HashMap<>());
+        Class<?> c = ofType.get(tok[1]);
         if (c == null) {
             try {
                 c = resolver.resolve(type, tok[1]);
             } catch (ClassResolver.Problem p) {
                 throw error(p.getMessage());
             }
-            resolved.put(type + ' ' + tok[1], c);
+            ofType.put(tok[1], c);
         }
         String name = rest.length == 1 ? rest[0] : null;
         if (name != null && named.containsKey(name)) {

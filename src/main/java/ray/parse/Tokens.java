@@ -230,6 +230,117 @@ final class Tokens {
         return neg ? -v : v;
     }
 
+    /** {@link #isDecimal(String, int, int)} on the bytes of an ASCII text. */
+    static boolean isDecimal(byte[] s, int from, int to) {
+        int i = from;
+        if (i < to && (s[i] == '+' || s[i] == '-')) i++;
+        int digits = 0;
+        while (i < to && s[i] >= '0' && s[i] <= '9') { i++; digits++; }
+        if (i < to && s[i] == '.') {
+            i++;
+            while (i < to && s[i] >= '0' && s[i] <= '9') { i++; digits++; }
+        }
+        if (digits == 0) return false;
+        if (i < to && (s[i] == 'e' || s[i] == 'E')) {
+            i++;
+            if (i < to && (s[i] == '+' || s[i] == '-')) i++;
+            int e = 0;
+            while (i < to && s[i] >= '0' && s[i] <= '9') { i++; e++; }
+            if (e == 0) return false;
+        }
+        return i == to;
+    }
+
+    /** {@link #parseDecimal(String, int, int)} on the bytes of an ASCII text (the same arithmetic). */
+    static double parseDecimal(byte[] s, int from, int to) {
+        int i = from;
+        boolean neg = false;
+        if (s[from] == '+' || s[from] == '-') {
+            neg = s[from] == '-';
+            i++;
+        }
+        long m = 0;
+        int digits = 0, exp = 0;
+        for (; i < to && s[i] >= '0' && s[i] <= '9'; i++) {
+            if ((m != 0 || s[i] != '0') && ++digits > 15) {
+                return slowDecimal(s, from, to);
+            }
+            m = 10 * m + (s[i] - '0');
+        }
+        if (i < to && s[i] == '.') {
+            for (i++; i < to && s[i] >= '0' && s[i] <= '9'; i++) {
+                if ((m != 0 || s[i] != '0') && ++digits > 15) {
+                    return slowDecimal(s, from, to);
+                }
+                m = 10 * m + (s[i] - '0');
+                exp--;
+            }
+        }
+        if (i < to) {   // 'e' or 'E' with at least one digit
+            i++;
+            boolean eneg = false;
+            if (s[i] == '+' || s[i] == '-') {
+                eneg = s[i] == '-';
+                i++;
+            }
+            if (to - i > 4) {
+                return slowDecimal(s, from, to);
+            }
+            int e = 0;
+            for (; i < to; i++) {
+                e = 10 * e + (s[i] - '0');
+            }
+            exp += eneg ? -e : e;
+        }
+        double v = m;
+        if (m != 0) {
+            if (exp < 0) {
+                if (exp < -22) {
+                    return slowDecimal(s, from, to);
+                }
+                v /= POW10[-exp];
+            } else if (exp > 0) {
+                if (exp > 22) {
+                    return slowDecimal(s, from, to);
+                }
+                v *= POW10[exp];
+            }
+        }
+        return neg ? -v : v;
+    }
+
+    private static double slowDecimal(byte[] s, int from, int to) {
+        return Double.parseDouble(new String(s, from, to - from, java.nio.charset.StandardCharsets.ISO_8859_1));
+    }
+
+    /** {@link #canonicalVector(String)} of the bytes [from, to) of an ASCII text. */
+    static double[] canonicalVector(byte[] s, int from, int to) {
+        int n = to - from;
+        if (n < 7 || s[from] != '[' || s[to - 1] != ']') {
+            return null;
+        }
+        int a = -1, b = -1;
+        for (int i = from + 1; i < to - 1; i++) {
+            if (s[i] == ' ') {
+                if (a < 0) {
+                    a = i;
+                } else if (b < 0) {
+                    b = i;
+                } else {
+                    return null;
+                }
+            }
+        }
+        if (b < 0 || !isDecimal(s, from + 1, a) || !isDecimal(s, a + 1, b) || !isDecimal(s, b + 1, to - 1)) {
+            return null;
+        }
+        double x = parseDecimal(s, from + 1, a), y = parseDecimal(s, a + 1, b), z = parseDecimal(s, b + 1, to - 1);
+        if (!Double.isFinite(x) || !Double.isFinite(y) || !Double.isFinite(z)) {
+            return null;
+        }
+        return new double[] {x, y, z};
+    }
+
     /**
      * Splits a canonical line into {@code split(line, false, 3)}'s tokens, or returns null when the
      * line is not canonical: non-empty, printable ASCII and single spaces only, no '#', no space at
