@@ -171,6 +171,7 @@ public final class Bvh implements Accelerator {
             return hit != -1;
         }
         double[] k = ctx.rayKernel;
+        double b0 = 0, b1 = 0, b2 = 0;
         // the watertight triangle test's per-ray set-up, made when the first triangle is tested
         boolean setUp = false;
         int kx = 0, ky = 0, kz = 0;
@@ -259,6 +260,9 @@ public final class Bvh implements Accelerator {
                                 best = th;
                                 hit = p;
                                 hitSlot = i;
+                                b0 = u * inv;
+                                b1 = w0 * inv;
+                                b2 = w1 * inv;
                             }
                             break;
                         }
@@ -286,6 +290,9 @@ public final class Bvh implements Accelerator {
             // pop the nearest pending subtree that may still hold a closer hit
             do {
                 if (sp == 0) {
+                    k[9] = b0;
+                    k[10] = b1;
+                    k[11] = b2;
                     return finish(hit, best, ray, rec, k, ox, oy, oz, dx, dy, dz);
                 }
                 ref = stack[--sp];
@@ -320,8 +327,7 @@ public final class Bvh implements Accelerator {
         int idx = hit >>> 2;
         switch (hit & 3) {
             case TRI: {
-                // the same test again, to leave the barycentrics in k (same arithmetic, same t)
-                Triangle.hit(tris, 9 * idx, k, ray.tMin, Double.POSITIVE_INFINITY);
+                // the barycentrics the winning test computed are in k[9..11]
                 Triangle.fill(tris, 9 * idx, k, best, rec);
                 rec.surface = triSurface[idx];
                 break;

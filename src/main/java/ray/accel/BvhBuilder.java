@@ -27,7 +27,7 @@ final class BvhBuilder {
     /** Most primitives in a leaf (at most 15: the count has 4 bits in a leaf reference). */
     static final int MAX_LEAF = 8;
     /** Cost of visiting an inner node (two box tests) relative to one primitive test. */
-    static final float TRAVERSAL_COST = 2.0f;
+    static final float TRAVERSAL_COST = 3.0f;
     /** Subtrees at least this large are split between threads. */
     static final int PARALLEL_MIN = 16_384;
     /** Past this depth, splits are median splits by count (bounded depth on any input). */

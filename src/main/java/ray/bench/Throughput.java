@@ -231,8 +231,31 @@ public final class Throughput {
         return hits;
     }
 
-    /** {@code java ray.bench.Throughput scene.txt [passes]}: prints the rates. */
+    /**
+     * {@code java ray.bench.Throughput scene.txt [passes]}: prints the rates. With {@code --row NAME
+     * scene.txt}: one Markdown table row (camera, shadow, mirror, camera any-hit; median Mrays/s), and
+     * with {@code --camera scene.txt}: "closest MEDIAN BEST" and "any MEDIAN BEST" lines for the
+     * camera rays (what {@code raytracer --bench} reads from the JVMs it starts).
+     */
     public static void main(String[] args) throws Exception {
+        if (args[0].equals("--row")) {
+            Throughput t = new Throughput(ray.parse.Parser.parse(java.nio.file.Path.of(args[2])));
+            StringBuilder row = new StringBuilder("| " + args[1] + " |");
+            for (Kind k : Kind.values()) {
+                Rate r = t.measure(k, 3, 7);
+                row.append(r == null ? " - |" : String.format(java.util.Locale.ROOT, " %.2f |", r.mraysPerSecond()));
+            }
+            row.append(String.format(java.util.Locale.ROOT, " %.2f |", t.anyHit(3, 7).mraysPerSecond()));
+            System.out.println(row);
+            return;
+        }
+        if (args[0].equals("--camera")) {
+            Throughput t = new Throughput(ray.parse.Parser.parse(java.nio.file.Path.of(args[1])));
+            Rate c = t.closestHit(5, 9), a = t.anyHit(5, 9);
+            System.out.println(String.format(java.util.Locale.ROOT, "closest %.3f %.3f", c.mraysPerSecond(), c.bestMraysPerSecond()));
+            System.out.println(String.format(java.util.Locale.ROOT, "any %.3f %.3f", a.mraysPerSecond(), a.bestMraysPerSecond()));
+            return;
+        }
         Scene s = ray.parse.Parser.parse(java.nio.file.Path.of(args[0]));
         int passes = args.length > 1 ? Integer.parseInt(args[1]) : 7;
         Throughput t = new Throughput(s);
