@@ -26,6 +26,12 @@ public final class TraceContext {
     public final double[] stackT = new double[128];
     /** Ray set-up for watertight triangle tests, filled once per ray by the accelerator. */
     public final double[] rayKernel = new double[ray.surface.Triangle.KERNEL_SIZE];
+    /**
+     * Inner nodes visited and primitives tested by this thread's BVH queries, counted only when the JVM
+     * runs with {@code -Dray.bvh.count=true} (the scaling study); otherwise the counting code is
+     * compiled away.
+     */
+    public long nodeVisits, primitiveTests;
     /** Nesting of {@link Scene#trace(Ray)} calls made from inside material code (bounds user recursion). */
     public int level;
 

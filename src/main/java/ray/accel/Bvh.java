@@ -33,6 +33,8 @@ import ray.surface.Triangle;
 public final class Bvh implements Accelerator {
 
     private static final int TRI = 0, SPHERE = 1, OTHER = 2;
+    /** Count node visits and primitive tests in the TraceContext (-Dray.bvh.count=true; a constant the JIT folds). */
+    static final boolean COUNT = Boolean.getBoolean("ray.bvh.count");
     /** Widens the far slab distance to cover rounding in the box test (pbrt: 1 + 2 gamma(3)). */
     private static final double SLAB_SLACK = 1 + 8 * 0x1p-53;
 
@@ -187,6 +189,9 @@ public final class Bvh implements Accelerator {
                 // inner node: test both children (slabs(), written out: C1 would not inline it), go to
                 // the nearer, keep the farther with its entry distance
                 int o = 12 * ref;
+                if (COUNT) {
+                    ctx.nodeVisits++;
+                }
                 double lo0 = tMin, hi0 = best, lo1 = tMin, hi1 = best, t;
                 t = (nb[o + nx] - ox) * ix; if (t > lo0) lo0 = t;
                 t = (nb[o + fx] - ox) * ix; if (t < hi0) hi0 = t;
@@ -223,6 +228,9 @@ public final class Bvh implements Accelerator {
                 int leaf = ~ref;
                 for (int i = leaf >>> 4, end = i + (leaf & 15); i < end; i++) {
                     int p = pr[i], idx = p >>> 2;
+                    if (COUNT) {
+                        ctx.primitiveTests++;
+                    }
                     switch (p & 3) {
                         case TRI: {
                             if (!setUp) {
@@ -384,6 +392,9 @@ public final class Bvh implements Accelerator {
         while (true) {
             if (ref >= 0) {
                 int o = 12 * ref;
+                if (COUNT) {
+                    ctx.nodeVisits++;
+                }
                 double lo0 = tMin, hi0 = tMax, lo1 = tMin, hi1 = tMax, t;
                 t = (nb[o + nx] - ox) * ix; if (t > lo0) lo0 = t;
                 t = (nb[o + fx] - ox) * ix; if (t < hi0) hi0 = t;
@@ -412,6 +423,9 @@ public final class Bvh implements Accelerator {
                 int leaf = ~ref;
                 for (int i = leaf >>> 4, end = i + (leaf & 15); i < end; i++) {
                     int p = pr[i], idx = p >>> 2;
+                    if (COUNT) {
+                        ctx.primitiveTests++;
+                    }
                     switch (p & 3) {
                         case TRI: {
                             if (!setUp) {

@@ -452,6 +452,25 @@ public final class Bench {
             }
         }
         out.println();
+        out.println("## Allocation on the hot path (a whole render on one thread, the launcher's JIT, after a warm-up render)");
+        out.println();
+        out.println("Heap bytes the render thread allocated (com.sun.management.ThreadMXBean), less the image itself "
+                + "(24 bytes per pixel, allocated once). C1 has no escape analysis, so nothing here is removed by the JIT.");
+        out.println();
+        out.println("| scene | rays | bytes allocated besides the image | bytes per ray |");
+        out.println("|---|---:|---:|---:|");
+        for (String s : scenes) {
+            Path log = work.resolve("alloc.log");
+            double t = time(throughputCommand(false, "--alloc", sceneDir.resolve(s + ".txt").toAbsolutePath().toString()), work, log);
+            String[] f = Files.readString(log, StandardCharsets.UTF_8).trim().split(" ");
+            if (t < 0 || f.length != 5 || !f[0].equals("alloc")) {
+                out.println("| " + s + " | failed |  |  |");
+                continue;
+            }
+            out.println(String.format(Locale.ROOT, "| %s | %,d | %,d | %s |", s, Long.parseLong(f[2]),
+                    Long.parseLong(f[3]) - Long.parseLong(f[4]), f[1]));
+        }
+        out.println();
         if (scenes.contains("mesh100k")) {
             embreeComparison(sceneDir.resolve("mesh100k.txt"));
         }

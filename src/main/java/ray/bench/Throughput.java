@@ -194,6 +194,18 @@ public final class Throughput {
         return rayCount(kind) == 0 ? null : run(kind, kind.closest, warmups, passes);
     }
 
+    /**
+     * Inner-node visits and primitive tests per ray of one pass over the rays of {@code kind}: counted
+     * only in a JVM started with {@code -Dray.bvh.count=true} (zeros otherwise).
+     */
+    public double[] workPerRay(Kind kind) {
+        double[] rays = sets[kind.ordinal()];
+        TraceContext ctx = new TraceContext(scene.maxDepth);
+        pass(scene.accelerator(), ctx, new Ray(), new IntersectionRecord(), rays, kind.closest);
+        double n = Math.max(1, rays.length / STRIDE);
+        return new double[] {ctx.nodeVisits / n, ctx.primitiveTests / n};
+    }
+
     private Rate run(Kind kind, boolean closest, int warmups, int passes) {
         double[] rays = sets[kind.ordinal()];
         Accelerator accel = scene.accelerator();
@@ -249,6 +261,10 @@ public final class Throughput {
             System.out.println(row);
             return;
         }
+        if (args[0].equals("--alloc")) {
+            System.out.println(allocationLine(ray.parse.Parser.parse(java.nio.file.Path.of(args[1]))));
+            return;
+        }
         if (args[0].equals("--camera")) {
             Throughput t = new Throughput(ray.parse.Parser.parse(java.nio.file.Path.of(args[1])));
             Rate c = t.closestHit(5, 9), a = t.anyHit(5, 9);
@@ -267,6 +283,29 @@ public final class Throughput {
                 print(r, k.label + " rays");
             }
         }
+    }
+
+    /**
+     * Heap bytes allocated per ray by a whole render on this thread (one render thread, after one
+     * warm-up render): what the hot path allocates, measured, not hoped for from escape analysis.
+     * "alloc BYTES_PER_RAY RAYS TOTAL_BYTES IMAGE_BYTES", bytes per ray not counting the image.
+     */
+    static String allocationLine(Scene s) {
+        com.sun.management.ThreadMXBean mx = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
+        long self = Thread.currentThread().getId();
+        new ray.render.Renderer(s).threads(1).render();
+        ray.render.Renderer r = new ray.render.Renderer(s).threads(1);
+        s.prepare();   // build outside the measured span
+        long a0 = mx.getThreadAllocatedBytes(self);
+        // the renderer calls prepare() itself: subtract what a build allocates, measured alone
+        r.render();
+        long a1 = mx.getThreadAllocatedBytes(self);
+        s.prepare();
+        long a2 = mx.getThreadAllocatedBytes(self);
+        long rays = r.stats().total();
+        long render = (a1 - a0) - (a2 - a1);
+        long image = 24L * s.width * s.height;   // the result: 3 doubles per pixel, allocated once
+        return String.format(java.util.Locale.ROOT, "alloc %.4f %d %d %d", (double) (render - image) / rays, rays, render, image);
     }
 
     private static void print(Rate r, String what) {

@@ -33,7 +33,9 @@ import ray.surface.Triangle;
  * 2 point lights, a 400x300 image at one sample per pixel. For each size, in one warmed-up JVM:
  * BVH build time (median of 3), render time after the build (median of 3, all cores), closest-hit
  * time per camera ray (1 thread), bytes per triangle of the BVH and its packed primitives
- * ({@link Bvh#memoryBytes()}), and heap bytes per triangle of the scene's own objects (a
+ * ({@link Bvh#memoryBytes()}), node visits and primitive tests per camera and per shadow ray (counted
+ * in a separate JVM with {@code -Dray.bvh.count=true}, so the timings carry no counting), and heap
+ * bytes per triangle of the scene's own objects (a
  * {@code Triangle} and its three {@code Vector3d}s). Prints a Markdown table and draws
  * {@code docs/images/scaling.png} (log axes), with reference curves proportional to log n and
  * n log n through the first point.
@@ -44,6 +46,8 @@ public final class Scaling {
     static final class Row {
         int triangles;
         double buildMs, renderMs, nsPerRay, bvhBytes, sceneBytes;
+        /** Per camera ray: node visits, primitive tests; per shadow ray: the same. */
+        double[] work;
         int nodes;
     }
 
@@ -163,8 +167,33 @@ public final class Scaling {
         return r;
     }
 
+    /** Node visits and primitive tests per camera ray (closest hit) and per shadow ray, from a JVM that counts. */
+    static double[] work(int target) throws IOException {
+        List<String> cmd = List.of(ProcessHandle.current().info().command().orElse("java"), "-Dray.bvh.count=true",
+                "-Xmx3g", "-cp", System.getProperty("java.class.path"), Scaling.class.getName(), "--count", Integer.toString(target));
+        Process p = new ProcessBuilder(cmd).redirectErrorStream(true).start();
+        String text = new String(p.getInputStream().readAllBytes(), java.nio.charset.StandardCharsets.UTF_8).trim();
+        try {
+            if (p.waitFor() != 0) {
+                throw new IOException("counting run failed: " + text);
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IOException(e);
+        }
+        String[] f = text.split(" ");
+        return new double[] {Double.parseDouble(f[0]), Double.parseDouble(f[1]), Double.parseDouble(f[2]), Double.parseDouble(f[3])};
+    }
+
     /** {@code Scaling [maxTriangles] [png]}: measures and writes the plot. */
     public static void main(String[] args) throws IOException {
+        if (args.length == 2 && args[0].equals("--count")) {
+            Diffuse m = new Diffuse();
+            Throughput t = new Throughput(scene(mesh(Integer.parseInt(args[1]), m), m));
+            double[] c = t.workPerRay(Throughput.Kind.CAMERA), s = t.workPerRay(Throughput.Kind.SHADOW);
+            System.out.println(String.format(Locale.ROOT, "%.3f %.3f %.3f %.3f", c[0], c[1], s[0], s[1]));
+            return;
+        }
         int max = args.length > 0 ? Integer.parseInt(args[0]) : 1_000_000;
         Path png = Path.of(args.length > 1 ? args[1] : "docs/images/scaling.png");
         // warm-up: the JIT compiles parsing-free build, render and traversal code on small meshes first
@@ -177,16 +206,19 @@ public final class Scaling {
                 break;
             }
             Row r = measure(n);
+            r.work = work(n);
             rows.add(r);
             System.err.println(String.format(Locale.ROOT, "%,d triangles done", r.triangles));
         }
         System.out.println("| triangles | BVH inner nodes | build ms | build ns / (n log2 n) | render ms (400x300, all cores) "
-                + "| closest hit ns/ray (1 thread) | BVH + primitives bytes/triangle | scene objects bytes/triangle |");
-        System.out.println("|---:|---:|---:|---:|---:|---:|---:|---:|");
+                + "| closest hit ns/ray (1 thread) | node visits / tests per camera ray | per shadow ray "
+                + "| BVH + primitives bytes/triangle | scene objects bytes/triangle |");
+        System.out.println("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
         for (Row r : rows) {
             double nlogn = r.triangles * Math.log(r.triangles) / Math.log(2);
-            System.out.println(String.format(Locale.ROOT, "| %,d | %,d | %.1f | %.2f | %.1f | %.0f | %.1f | %.0f |", r.triangles, r.nodes,
-                    r.buildMs, 1e6 * r.buildMs / nlogn, r.renderMs, r.nsPerRay, r.bvhBytes, r.sceneBytes));
+            System.out.println(String.format(Locale.ROOT, "| %,d | %,d | %.1f | %.2f | %.1f | %.0f | %.1f / %.1f | %.1f / %.1f | %.1f | %.0f |",
+                    r.triangles, r.nodes, r.buildMs, 1e6 * r.buildMs / nlogn, r.renderMs, r.nsPerRay, r.work[0], r.work[1],
+                    r.work[2], r.work[3], r.bvhBytes, r.sceneBytes));
         }
         plot(rows, png);
         System.out.println();
@@ -212,6 +244,8 @@ public final class Scaling {
         time.addSeries("BVH build", n, build).setMarker(SeriesMarkers.CIRCLE);
         time.addSeries("render 400x300 (after build)", n, render).setMarker(SeriesMarkers.SQUARE);
         time.addSeries("closest hit per camera ray (us)", n, perRay).setMarker(SeriesMarkers.DIAMOND);
+        time.addSeries("node visits per camera ray (count)", n, rows.stream().mapToDouble(r -> r.work[0]).toArray())
+                .setMarker(SeriesMarkers.TRIANGLE_UP);
         XYSeries a = time.addSeries("c * n log n", n, nlognRef);
         a.setMarker(SeriesMarkers.NONE).setLineStyle(new java.awt.BasicStroke(1.5f, java.awt.BasicStroke.CAP_BUTT,
                 java.awt.BasicStroke.JOIN_MITER, 10, new float[] {6, 4}, 0));
