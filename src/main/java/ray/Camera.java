@@ -79,8 +79,24 @@ public class Camera implements SceneObject {
 
     /** Allocation-free {@link #getRayThrough}: fills {@code r} as a camera ray (depth 0, t from 0). */
     public void setRayThrough(Ray r, double x, double y, double width, double height) {
-        double a = (2 * x / width - 1) * halfWidth;
-        double b = (1 - 2 * y / height) * halfHeight;
+        setRay(r, planeX(x, width), planeY(y, height));
+    }
+
+    /** Where image x (of {@code width} pixels) lies on the image plane, along u. */
+    public double planeX(double x, double width) {
+        return (2 * x / width - 1) * halfWidth;
+    }
+
+    /** Where image y (of {@code height} pixels, down from the top) lies on the image plane, along v. */
+    public double planeY(double y, double height) {
+        return (1 - 2 * y / height) * halfHeight;
+    }
+
+    /**
+     * The camera ray through the image-plane point {@code a} u + {@code b} v - w (from {@link #planeX}
+     * and {@link #planeY}; a renderer can compute those once per sample column and row).
+     */
+    public void setRay(Ray r, double a, double b) {
         double dx = a * u.x + b * v.x - w.x, dy = a * u.y + b * v.y - w.y, dz = a * u.z + b * v.z - w.z;
         double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
         r.set(eye.x, eye.y, eye.z, dx / len, dy / len, dz / len, 0, Double.POSITIVE_INFINITY, 0);

@@ -24,6 +24,19 @@ public final class RayStats {
 
     @Override
     public String toString() {
-        return String.format("%,d camera, %,d shadow, %,d mirror rays", camera, shadow, mirror);
+        return grouped(camera) + " camera, " + grouped(shadow) + " shadow, " + grouped(mirror) + " mirror rays";
+    }
+
+    /** {@code n} with commas between groups of three digits, as {@code %,d} in an English locale. */
+    static String grouped(long n) {
+        String s = Long.toString(Math.abs(n));
+        StringBuilder b = new StringBuilder();
+        for (int i = 0; i < s.length(); i++) {
+            if (i > 0 && (s.length() - i) % 3 == 0) {
+                b.append(',');
+            }
+            b.append(s.charAt(i));
+        }
+        return (n < 0 ? "-" : "") + b;
     }
 }

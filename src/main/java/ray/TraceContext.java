@@ -22,8 +22,16 @@ public final class TraceContext {
     public final RayStats stats = new RayStats();
     /** BVH traversal stack (node indices); 64 levels is deeper than any SAH tree over 2^31 primitives. */
     public final int[] stack = new int[128];
+    /** Entry distances of the subtrees on {@link #stack} (closest-hit traversal skips those beyond the hit). */
+    public final double[] stackT = new double[128];
     /** Ray set-up for watertight triangle tests, filled once per ray by the accelerator. */
     public final double[] rayKernel = new double[ray.surface.Triangle.KERNEL_SIZE];
+    /**
+     * Inner nodes visited and primitives tested by this thread's BVH queries, counted only when the JVM
+     * runs with {@code -Dray.bvh.count=true} (the scaling study); otherwise the counting code is
+     * compiled away.
+     */
+    public long nodeVisits, primitiveTests;
     /**
      * While framework-style material code runs, the depth of the rays it traces with {@link Scene#trace(Ray)}:
      * one more than the ray it is shading (0 outside such code). Bounds user recursion by MaxDepth and keeps

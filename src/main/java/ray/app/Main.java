@@ -11,6 +11,8 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import ray.Scene;
+import ray.accel.Bvh;
+import ray.bench.Bench;
 import ray.parse.Parser;
 import ray.parse.SceneFormatException;
 import ray.render.Image;
@@ -42,7 +44,7 @@ public final class Main implements Callable<Integer> {
     @Option(names = {"-q", "--quiet"}, description = "print nothing but errors")
     boolean quiet;
 
-    @Option(names = "--stats", description = "print parse and render times and rays by kind")
+    @Option(names = "--stats", description = "print parse, build, render and write times, rays by kind, peak memory and BVH size")
     boolean stats;
 
     @Option(names = "--view", description = "open the viewer on the (first) scene instead of writing a PNG")
@@ -50,6 +52,25 @@ public final class Main implements Callable<Integer> {
 
     /** What {@link #run} returns when the viewer was opened: the JVM must keep running (no System.exit). */
     public static final int VIEWER_OPEN = -1;
+    @Option(names = "--bench", description = "render the benchmark scenes as whole processes and print the table: wall time, "
+            + "parse/build/render/write, rays by kind, peak memory (docs/performance.md)")
+    boolean bench;
+
+    @Option(names = "--runs", paramLabel = "N", description = "with --bench: timed runs per scene after one warm-up (default ${DEFAULT-VALUE})")
+    int runs = 3;
+
+    @Option(names = "--peers", description = "with --bench: also time the installed peer renderers, interleaved, and compare with Embree")
+    boolean peers;
+
+    @Option(names = "--bench-dir", paramLabel = "DIR", description = "with --bench: the benchmark directory (scenes/, gen/, peers/); "
+            + "default $RAYTRACER_BENCH_DIR or ../shared/bench")
+    Path benchDir;
+
+    @Option(names = "--bench-scenes", paramLabel = "LIST", description = "with --bench: some of classic,mirrors,spheres10k,mesh100k")
+    String benchScenes;
+
+    @Option(names = "--bench-work", paramLabel = "DIR", description = "with --bench: where images, logs and generated scenes go (default: a raytracer-bench directory in the temporary directory)")
+    Path benchWork;
 
     private PrintStream out = System.out;
     private PrintStream err = System.err;
@@ -60,6 +81,12 @@ public final class Main implements Callable<Integer> {
     }
 
     public static int run(PrintStream out, PrintStream err, String... args) {
+        Main simple = simpleCommandLine(args);
+        if (simple != null) {
+            simple.out = out;
+            simple.err = err;
+            return simple.call();
+        }
         Main main = new Main();
         main.out = out;
         main.err = err;
@@ -69,11 +96,105 @@ public final class Main implements Callable<Integer> {
         return cl.execute(args);
     }
 
+    /**
+     * The everyday command lines, read without picocli, whose start-up costs about 0.15 s of CPU
+     * (it reflects over the annotations of the whole command): scene files, {@code -o/--output PNG},
+     * {@code -j/--threads N}, {@code -q/--quiet} and {@code --stats}, each option at most once, values
+     * as separate words. Returns null for anything else (no arguments, help, version, other options,
+     * {@code @files}, repeated options, unusual values), which picocli then reads and reports exactly
+     * as before.
+     */
+    static Main simpleCommandLine(String[] args) {
+        if (args.length == 0) {
+            return null;
+        }
+        Main m = new Main();
+        boolean threadsSet = false;
+        try {
+            for (int i = 0; i < args.length; i++) {
+                String a = args[i];
+                switch (a) {
+                    case "-q", "--quiet" -> {
+                        if (m.quiet) {
+                            return null;
+                        }
+                        m.quiet = true;
+                    }
+                    case "--stats" -> {
+                        if (m.stats) {
+                            return null;
+                        }
+                        m.stats = true;
+                    }
+                    case "-o", "--output" -> {
+                        if (m.output != null || i + 1 == args.length || !plainWord(args[i + 1])) {
+                            return null;
+                        }
+                        m.output = Path.of(args[++i]);
+                    }
+                    case "-j", "--threads" -> {
+                        if (threadsSet || i + 1 == args.length || !smallNumber(args[i + 1])) {
+                            return null;
+                        }
+                        m.threads = Integer.parseInt(args[++i]);
+                        threadsSet = true;
+                    }
+                    default -> {
+                        if (!plainWord(a)) {
+                            return null;
+                        }
+                        m.scenes.add(Path.of(a));
+                    }
+                }
+            }
+        } catch (java.nio.file.InvalidPathException e) {
+            return null;
+        }
+        return m;
+    }
+
+    /** One to nine ASCII digits. */
+    private static boolean smallNumber(String a) {
+        if (a.isEmpty() || a.length() > 9) {
+            return false;
+        }
+        for (int i = 0; i < a.length(); i++) {
+            if (a.charAt(i) < '0' || a.charAt(i) > '9') {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** Not an option, an {@code @file} or empty: a word picocli takes as a plain value. */
+    private static boolean plainWord(String a) {
+        return !a.isEmpty() && a.charAt(0) != '-' && a.charAt(0) != '@';
+    }
+
     @Override
     public Integer call() {
         if (threads < 1) {
             err.println("raytracer: --threads must be at least 1");
             return 2;
+        }
+        if (bench) {
+            if (!scenes.isEmpty() || output != null || runs < 1) {
+                err.println("raytracer: --bench takes no scene files and no --output, and --runs must be at least 1");
+                return 2;
+            }
+            try {
+                Path work = benchWork != null ? benchWork : Path.of(System.getProperty("java.io.tmpdir"), "raytracer-bench");
+                return new Bench(out, err, runs, peers, Bench.findBenchDir(benchDir), work, Bench.sceneList(benchScenes)).run();
+            } catch (IllegalArgumentException e) {
+                err.println("raytracer: " + e.getMessage());
+                return 2;
+            } catch (java.io.IOException e) {
+                err.println("raytracer: bench: " + e.getMessage());
+                return 1;
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                return 1;
+            }
         }
         if (output != null && scenes.size() != 1) {
             err.println("raytracer: --output needs exactly one scene file");
@@ -151,13 +272,19 @@ public final class Main implements Callable<Integer> {
             return false;
         }
         long t3 = System.nanoTime();
+        // plain concatenation, not printf: java.util.Formatter's first use loads locale data (~20 ms)
         if (!quiet) {
-            out.printf("%s -> %s (%dx%d, %dx%d AA, %.2f s)%n", scenePath, png, scene.width, scene.height,
-                    scene.samplesPerPixel, scene.samplesPerPixel, (t3 - t0) / 1e9);
+            out.println(scenePath + " -> " + png + " (" + scene.width + "x" + scene.height + ", " + scene.samplesPerPixel
+                    + "x" + scene.samplesPerPixel + " AA, " + fixed(t3 - t0, 2) + " s)");
         }
         if (stats) {
-            out.printf("  parse %.3f s, render %.3f s, write %.3f s; %s%n", (t1 - t0) / 1e9, (t2 - t1) / 1e9,
-                    (t3 - t2) / 1e9, renderer.stats());
+            long build = scene.accelerator() instanceof Bvh b ? b.buildNanos() : 0;
+            String bvh = scene.accelerator() instanceof Bvh b && b.primitiveCount() > 0
+                    ? "; BVH " + fixed(Math.round(1e9 * b.memoryBytes() / b.primitiveCount()), 1) + " bytes/primitive" : "";
+            long peak = peakRssBytes();
+            out.println("  parse " + fixed(t1 - t0, 3) + " s, build " + fixed(build, 3) + " s, render " + fixed(t2 - t1 - build, 3)
+                    + " s, write " + fixed(t3 - t2, 3) + " s; " + renderer.stats()
+                    + (peak > 0 ? "; peak RSS " + (peak >> 20) + " MiB" : "") + bvh + "; cpu " + fixed(processCpuNanos(), 3) + " s");
         }
         if (renderer.stats().invalidSamples > 0) {
             err.println(scenePath + ": warning: " + renderer.stats().invalidSamples + " samples were NaN or infinite and were left black");
@@ -173,6 +300,37 @@ public final class Main implements Callable<Integer> {
     /** Keeps an error report on one line whatever an exception's message holds. */
     static String oneLine(String s) {
         return s.replaceAll("[\\p{Cntrl}\u2028\u2029]+", " ");
+    }
+
+    /** {@code nanos} as seconds with {@code digits} decimals (half up), without java.util.Formatter. */
+    static String fixed(long nanos, int digits) {
+        long scale = digits == 1 ? 10 : digits == 2 ? 100 : 1000;
+        long units = (nanos * scale + 500_000_000L) / 1_000_000_000L;
+        String frac = Long.toString(units % scale);
+        while (frac.length() < digits) {
+            frac = "0" + frac;
+        }
+        return units / scale + "." + frac;
+    }
+
+    /** CPU time of this process so far (all threads: render, JIT compiler, GC), or 0 where unknown. */
+    static long processCpuNanos() {
+        java.lang.management.OperatingSystemMXBean os = java.lang.management.ManagementFactory.getOperatingSystemMXBean();
+        return os instanceof com.sun.management.OperatingSystemMXBean o ? Math.max(0, o.getProcessCpuTime()) : 0;
+    }
+
+    /** Peak resident set size of this process (VmHWM on Linux), or 0 where unknown. */
+    static long peakRssBytes() {
+        try {
+            for (String l : java.nio.file.Files.readAllLines(Path.of("/proc/self/status"))) {
+                if (l.startsWith("VmHWM:")) {
+                    return 1024 * Long.parseLong(l.substring(6).replace("kB", "").strip());
+                }
+            }
+        } catch (java.io.IOException | RuntimeException e) {
+            // not Linux: unknown
+        }
+        return 0;
     }
 
     static final class Version implements CommandLine.IVersionProvider {

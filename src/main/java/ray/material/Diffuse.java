@@ -40,7 +40,11 @@ public class Diffuse extends Material {
         double r = ambientColor.x * ia.x, g = ambientColor.y * ia.y, b = ambientColor.z * ia.z;
         Vector3d n = rec.normal;
         LightSample s = ctx.lightSample;
-        for (Light light : scene.lights) {
+        java.util.List<Light> lights = scene.lights;
+        // an index loop: a for-each would allocate an Iterator per shading point wherever the JIT does
+        // not remove it (C1, the launcher's compiler, has no escape analysis)
+        for (int k = 0, lightCount = lights.size(); k < lightCount; k++) {
+            Light light = lights.get(k);
             for (int i = 0, count = light.sampleCount(); i < count; i++) {
                 if (!light.sample(rec, scene, i, s)) {
                     continue;

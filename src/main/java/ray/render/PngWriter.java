@@ -9,12 +9,11 @@ import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
 import java.util.concurrent.ThreadLocalRandom;
-import javax.imageio.ImageIO;
 
 /**
  * Writes PNGs atomically: the image goes to a temporary file in the target's directory, which is then
  * renamed over the target. A failed or interrupted write never leaves a partial PNG and never
- * clobbers the existing one.
+ * clobbers the existing one. The bytes come from {@link PngEncoder} (not ImageIO: see there why).
  */
 public final class PngWriter {
 
@@ -28,9 +27,7 @@ public final class PngWriter {
         Runtime.getRuntime().addShutdownHook(cleanup);   // Ctrl-C during the write: no stray temp file
         try {
             try (OutputStream out = Files.newOutputStream(tmp)) {
-                if (!ImageIO.write(image.toBufferedImage(), "png", out)) {
-                    throw new IOException("no PNG writer available");
-                }
+                PngEncoder.write(image, out);
             }
             try {
                 Files.move(tmp, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);

@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicInteger;
 import javax.vecmath.Vector3d;
+import ray.Ray;
 import ray.RayStats;
 import ray.Scene;
 import ray.TraceContext;
@@ -67,6 +68,26 @@ public final class Renderer {
         int tilesX = (w + TILE - 1) / TILE, tilesY = (h + TILE - 1) / TILE, total = tilesX * tilesY;
         AtomicInteger next = new AtomicInteger(), done = new AtomicInteger();
         int n = Math.max(1, Math.min(threads, total));
+        // the regular grid's image-plane coordinates, once per sample column and row instead of per sample
+        int ns = Math.max(1, scene.samplesPerPixel);
+        double[] planeA = null, planeB = null;
+        if (pattern == SamplePattern.GRID) {
+            double[] off = new double[2 * ns * ns];
+            SamplePattern.GRID.offsets(0, 0, ns, off);
+            planeA = new double[w * ns];
+            planeB = new double[h * ns];
+            for (int x = 0; x < w; x++) {
+                for (int i = 0; i < ns; i++) {
+                    planeA[x * ns + i] = scene.camera.planeX(x + off[2 * i], w);
+                }
+            }
+            for (int y = 0; y < h; y++) {
+                for (int j = 0; j < ns; j++) {
+                    planeB[y * ns + j] = scene.camera.planeY(y + off[2 * j * ns + 1], h);
+                }
+            }
+        }
+        final double[] tableA = planeA, tableB = planeB;
         List<Thread> workers = new ArrayList<>();
         List<TraceContext> contexts = new ArrayList<>();
         Throwable[] failure = new Throwable[1];
@@ -83,7 +104,11 @@ public final class Renderer {
                         int x1 = Math.min(w, x0 + TILE), y1 = Math.min(h, y0 + TILE);
                         for (int y = y0; y < y1; y++) {
                             for (int x = x0; x < x1; x++) {
-                                renderPixel(ctx, x, y, c, offsets);
+                                if (tableA != null) {
+                                    renderGridPixel(ctx, x, y, c, tableA, tableB);
+                                } else {
+                                    renderPixel(ctx, x, y, c, offsets);
+                                }
                                 image.set(x, y, c.x, c.y, c.z);
                             }
                         }
@@ -133,6 +158,30 @@ public final class Renderer {
     public void renderPixel(TraceContext ctx, int x, int y, Vector3d out) {
         int ns = scene.samplesPerPixel;
         renderPixel(ctx, x, y, out, new double[2 * ns * ns]);
+    }
+
+    /** {@link #renderPixel} for the regular grid, with the image-plane coordinates from the tables. */
+    private void renderGridPixel(TraceContext ctx, int x, int y, Vector3d out, double[] planeA, double[] planeB) {
+        int ns = Math.max(1, scene.samplesPerPixel), count = ns * ns;
+        double r = 0, g = 0, b = 0;
+        Vector3d c = ctx.color(0);
+        Ray ray = ctx.ray(0);
+        for (int j = 0, s = 0; j < ns; j++) {
+            double pb = planeB[y * ns + j];
+            for (int i = 0; i < ns; i++, s++) {
+                scene.camera.setRay(ray, planeA[x * ns + i], pb);
+                ctx.stats.camera++;
+                scene.traceInto(ray, ctx, c);
+                if (Double.isFinite(c.x) && Double.isFinite(c.y) && Double.isFinite(c.z)) {
+                    r += c.x;
+                    g += c.y;
+                    b += c.z;
+                } else {
+                    ctx.stats.invalidSamples++;   // last line of defence: a NaN never reaches a pixel
+                }
+            }
+        }
+        out.set(r / count, g / count, b / count);
     }
 
     private void renderPixel(TraceContext ctx, int x, int y, Vector3d out, double[] offsets) {

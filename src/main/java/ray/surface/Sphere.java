@@ -68,6 +68,15 @@ public class Sphere extends Surface {
             return Double.NaN;
         }
         double b = fx * dx + fy * dy + fz * dz;            // half the linear coefficient
+        // a clear miss, decided without a division or a square root: the centre's squared distance from
+        // the line is |f x d|^2 / a exactly; when it exceeds r^2 by far more than any rounding below
+        // (a relative 1e-6 of r^2, plus 1e-6 of |f|^2 for the cancellation in the cross product),
+        // the exact test below would find disc < 0 too
+        double qx = fy * dz - fz * dy, qy = fz * dx - fx * dz, qz = fx * dy - fy * dx;
+        double ff = fx * fx + fy * fy + fz * fz;
+        if (qx * qx + qy * qy + qz * qz > a * (r * r * (1 + 1e-6) + 1e-6 * ff)) {
+            return Double.NaN;
+        }
         // discriminant / a = r^2 - |f - (f.d / a) d|^2: the centre's squared distance from the line
         double s = b / a;
         double lx = fx - s * dx, ly = fy - s * dy, lz = fz - s * dz;
@@ -76,7 +85,7 @@ public class Sphere extends Surface {
         if (disc < 0) {
             return Double.NaN;
         }
-        double c = (fx * fx + fy * fy + fz * fz) - r * r;
+        double c = ff - r * r;
         // stable roots: q = -(b + sign(b) sqrt(a disc)); t0 = c / q, t1 = q / a
         double q = -(b + Math.copySign(Math.sqrt(a * disc), b));
         double t0, t1;

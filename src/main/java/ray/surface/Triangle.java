@@ -84,7 +84,7 @@ public class Triangle extends Surface {
     /** Length of the per-ray array used by {@link #setupRay} and {@link #hit}. */
     public static final int KERNEL_SIZE = 12;
     /** Relative rounding bound of the edge functions (16 eps; see {@link #hit}). */
-    private static final double PARALLEL = 16 * 0x1p-53;
+    public static final double PARALLEL = 16 * 0x1p-53;
     private static final int SX = 3, SY = 4, SZ = 5, OX = 6, OY = 7, OZ = 8, B0 = 9, B1 = 10, B2 = 11;
 
     /**

@@ -1,0 +1,88 @@
+package ray.surface;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.Random;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Sphere.hit's division-free early miss must never change an answer: on random rays, including rays
+ * grazing the silhouette to within a few ulps, tiny far spheres and huge near ones, it must return
+ * bit for bit what the exact quadratic alone returns.
+ */
+class SphereKernelTest {
+
+    /** The exact test without the early miss (the kernel as it was before the shortcut). */
+    static double reference(double cx, double cy, double cz, double r, double ox, double oy, double oz,
+                            double dx, double dy, double dz, double tMin, double tMax) {
+        double fx = ox - cx, fy = oy - cy, fz = oz - cz;
+        double a = dx * dx + dy * dy + dz * dz;
+        if (!(a > 0) || a == Double.POSITIVE_INFINITY) {
+            return Double.NaN;
+        }
+        double b = fx * dx + fy * dy + fz * dz;
+        double s = b / a;
+        double lx = fx - s * dx, ly = fy - s * dy, lz = fz - s * dz;
+        double dist = Math.sqrt(lx * lx + ly * ly + lz * lz);
+        double disc = (r - dist) * (r + dist);
+        if (disc < 0) {
+            return Double.NaN;
+        }
+        double c = (fx * fx + fy * fy + fz * fz) - r * r;
+        double q = -(b + Math.copySign(Math.sqrt(a * disc), b));
+        double t0, t1;
+        if (q == 0) {
+            t0 = t1 = 0;
+        } else {
+            t0 = c / q;
+            t1 = q / a;
+        }
+        double tNear = Math.min(t0, t1), tFar = Math.max(t0, t1);
+        if (tNear >= tMin && tNear <= tMax) {
+            return tNear;
+        }
+        if (tFar >= tMin && tFar <= tMax) {
+            return tFar;
+        }
+        return Double.NaN;
+    }
+
+    @Test
+    void earlyMissChangesNoAnswer() {
+        Random rnd = new Random(3);
+        int hits = 0, grazing = 0;
+        for (int k = 0; k < 2_000_000; k++) {
+            double scale = Math.pow(10, rnd.nextInt(13) - 6);          // 1e-6 .. 1e6
+            double r = scale * (0.01 + rnd.nextDouble());
+            double cx = scale * 100 * (rnd.nextDouble() - 0.5), cy = scale * 100 * (rnd.nextDouble() - 0.5), cz = scale * 100 * (rnd.nextDouble() - 0.5);
+            double far = Math.pow(10, rnd.nextInt(7));
+            double ox = cx + far * scale * 50 * (rnd.nextDouble() - 0.5), oy = cy + far * scale * 50 * (rnd.nextDouble() - 0.5),
+                    oz = cz + far * scale * 50 * (rnd.nextDouble() - 0.5);
+            // aim at a point at distance ~r from the centre: on, just inside or just outside the silhouette
+            double px = rnd.nextGaussian(), py = rnd.nextGaussian(), pz = rnd.nextGaussian();
+            double pl = Math.sqrt(px * px + py * py + pz * pz);
+            double rr = r * (1 + (rnd.nextInt(3) == 0 ? rnd.nextGaussian() * 1e-12 : rnd.nextGaussian() * 0.3));
+            double dx = cx + rr * px / pl - ox, dy = cy + rr * py / pl - oy, dz = cz + rr * pz / pl - oz;
+            if (rnd.nextBoolean()) {
+                double dl = Math.sqrt(dx * dx + dy * dy + dz * dz);
+                dx /= dl;
+                dy /= dl;
+                dz /= dl;
+            }
+            double tMin = rnd.nextInt(4) == 0 ? 0 : 1e-9, tMax = rnd.nextInt(4) == 0 ? 1 : Double.POSITIVE_INFINITY;
+            double expected = reference(cx, cy, cz, r, ox, oy, oz, dx, dy, dz, tMin, tMax);
+            double got = Sphere.hit(cx, cy, cz, r, ox, oy, oz, dx, dy, dz, tMin, tMax);
+            final int kk = k;
+            assertEquals(Double.doubleToLongBits(expected), Double.doubleToLongBits(got), () -> "case " + kk);
+            if (expected == expected) {
+                hits++;
+            }
+            if (Math.abs(rr / r - 1) < 1e-9) {
+                grazing++;
+            }
+        }
+        assertTrue(hits > 100_000, "enough hits: " + hits);
+        assertTrue(grazing > 100_000, "enough grazing rays: " + grazing);
+    }
+}
