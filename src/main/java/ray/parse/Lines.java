@@ -20,6 +20,8 @@ final class Lines {
 
     /** How far the start of the input is searched for a NUL byte, the mark of a binary file (as git and grep do). */
     static final int BINARY_SNIFF = 8000;
+    /** The most bytes of a line kept: more than {@link Limits#MAX_LINE} chars of at most 3 bytes each. */
+    private static final int LONGEST = 3 * Limits.MAX_LINE + 1;
 
     private final String file;
     // text source
@@ -31,7 +33,11 @@ final class Lines {
     private int bufPos, bufLen;
     private boolean eof;
     private byte[] lineBytes;
+    private int len;
+    private boolean ascii;
     private CharsetDecoder utf8;
+    /** The line last read as text; null for an ASCII line until {@link #text()} makes it. */
+    private String current;
 
     private int line;
 
@@ -76,20 +82,47 @@ final class Lines {
         return l;
     }
 
-    /** Number of the line last returned by {@link #next()} (0 before the first). */
+    /** Number of the line last read (0 before the first). */
     int line() {
         return line;
     }
 
-    /** The next line without its terminator, or null at the end of the input. */
-    String next() throws SceneFormatException, IOException {
+    /**
+     * Reads the next line, checking it, and returns false at the end of the input. Its text is then
+     * {@link #text()}; when it is plain ASCII ({@link #ascii()}), also its bytes, {@link #bytes()}
+     * [0, {@link #length()}), which is all the parser's fast path reads.
+     */
+    boolean advance() throws SceneFormatException, IOException {
         return text != null ? nextFromText() : nextFromBytes();
     }
 
-    private String nextFromText() throws SceneFormatException {
+    /** The line last read, without its terminator. */
+    String text() {
+        if (current == null) {      // a plain ASCII line: each byte is its char, as UTF-8 decoding gives
+            current = new String(lineBytes, 0, len, StandardCharsets.ISO_8859_1);
+        }
+        return current;
+    }
+
+    /** Whether the line last read came from bytes and is plain ASCII (so {@link #bytes()} holds it). */
+    boolean ascii() {
+        return ascii;
+    }
+
+    /** The bytes of an {@link #ascii()} line, valid until the next {@link #advance()}. */
+    byte[] bytes() {
+        return lineBytes;
+    }
+
+    /** How many of {@link #bytes()} the line has. */
+    int length() {
+        return len;
+    }
+
+    private boolean nextFromText() throws SceneFormatException {
         int n = text.length();
         if (pos >= n) {
-            return null;
+            return false;
         }
         line++;
         int start = pos, i = pos;
@@ -106,21 +139,43 @@ final class Lines {
             }
             i++;
         }
-        String s = text.substring(start, i);
+        current = text.substring(start, i);
         pos = i < n && text.charAt(i) == '\r' && i + 1 < n && text.charAt(i + 1) == '\n' ? i + 2 : i + 1;
-        return s;
+        return true;
     }
 
-    private String nextFromBytes() throws SceneFormatException, IOException {
+    private boolean nextFromBytes() throws SceneFormatException, IOException {
         if (bufPos >= bufLen && !fill()) {
-            return null;
+            return false;
         }
         line++;
-        int len = 0;
+        int len = 0, high = 0;
+        byte[] buf = this.buf;
         while (true) {
             if (bufPos >= bufLen && !fill()) {
                 break;
             }
+            // the run of ordinary bytes up to the next special one, copied at once
+            int p = bufPos, end = Math.min(bufLen, p + (LONGEST - len));
+            while (p < end) {
+                byte c = buf[p];
+                if ((c < 0x20 && c >= 0) || c == 0x7f) {
+                    break;
+                }
+                high |= c;
+                p++;
+            }
+            if (p > bufPos) {
+                int run = p - bufPos;
+                if (len + run > lineBytes.length) {
+                    lineBytes = java.util.Arrays.copyOf(lineBytes, Math.min(Math.max(2 * lineBytes.length, len + run), LONGEST));
+                }
+                System.arraycopy(buf, bufPos, lineBytes, len, run);
+                len += run;
+                bufPos = p;
+                continue;
+            }
+            // one byte: a line end, a control character, or the one past the most a line may have
             byte b = buf[bufPos++];
             if (b == '\n') {
                 break;
@@ -136,19 +191,29 @@ final class Lines {
             if (b >= 0 && control((char) b)) {
                 throw b == 0 ? binary(line, b) : controlCharacter((char) b);
             }
+            if (len == LONGEST) {     // a char is at most 3 bytes: already too long
+                throw tooLong();
+            }
             if (len == lineBytes.length) {
-                if (len >= 3 * Limits.MAX_LINE) {    // a char is at most 3 bytes: already too long
-                    throw tooLong();
-                }
-                lineBytes = java.util.Arrays.copyOf(lineBytes, Math.min(2 * len, 3 * Limits.MAX_LINE + 1));
+                lineBytes = java.util.Arrays.copyOf(lineBytes, Math.min(2 * len, LONGEST));
             }
             lineBytes[len++] = b;
+            high |= b;
         }
-        String s = decode(len);
-        if (s.length() > Limits.MAX_LINE) {
-            throw tooLong();
+        this.len = len;
+        ascii = high >= 0;
+        if (ascii) {
+            current = null;           // made by text() if the parser needs it
+            if (len > Limits.MAX_LINE) {
+                throw tooLong();
+            }
+        } else {
+            current = decode(len);
+            if (current.length() > Limits.MAX_LINE) {
+                throw tooLong();
+            }
         }
-        return s;
+        return true;
     }
 
     private String decode(int len) throws SceneFormatException {

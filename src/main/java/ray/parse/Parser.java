@@ -2,8 +2,10 @@ package ray.parse;
 
 import java.io.IOException;
 import java.io.InputStream;
+import java.lang.reflect.Constructor;
 import java.lang.reflect.Field;
 import java.lang.reflect.InvocationTargetException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.AccessDeniedException;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
@@ -12,6 +14,7 @@ import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import javax.vecmath.Vector3d;
 import ray.Camera;
 import ray.Scene;
 import ray.SceneObject;
@@ -41,6 +44,8 @@ public final class Parser {
     private final Map<String, Object> named = new HashMap<>();
     private final Map<String, Integer> namedLines = new HashMap<>();
     private final Map<String, Integer> globalLines = new HashMap<>();
+    /** Scene classes' no-argument constructors, looked up once per file. */
+    private final Map<Class<?>, Constructor<?>> constructors = new HashMap<>();
     private final List<String> warnings = new ArrayList<>();
 
     // the object being read
@@ -113,8 +118,13 @@ public final class Parser {
 
     private Scene run(Lines lines, List<String> warningsOut) throws SceneFormatException, IOException {
         boolean any = false;
-        for (String raw = lines.next(); raw != null; raw = lines.next()) {
+        while (lines.advance()) {
             line = lines.line();
+            if (lines.ascii() && fastLine(lines.bytes(), lines.length())) {
+                any |= lines.length() > 0;
+                continue;
+            }
+            String raw = lines.text();
             String s = stripComment(raw).strip();
             if (s.isEmpty()) {
                 if (raw.isBlank() && current != null && blankAfter == 0) {
@@ -226,13 +236,26 @@ public final class Parser {
             throw error("the name " + Values.quote(name) + " is already used by the " + named.get(name).getClass().getSimpleName()
                     + " at line " + namedLines.get(name) + " (expected a name used once in the file)");
         }
+        begin(type, w[1], c, name);
+        lastType = type;
+        lastClassName = w[1];
+        lastClass = c;
+    }
+
+    /** Creates the object of a header and makes it the one being read. */
+    private void begin(String type, String className, Class<?> c, String name) throws SceneFormatException {
         Object o;
         try {
-            o = c.getConstructor().newInstance();
+            Constructor<?> k = constructors.get(c);
+            if (k == null) {
+                k = c.getConstructor();
+                constructors.put(c, k);
+            }
+            o = k.newInstance();
         } catch (InvocationTargetException e) {
-            throw error("creating " + w[1] + " failed: " + describe(e.getCause()));
+            throw error("creating " + className + " failed: " + describe(e.getCause()));
         } catch (ReflectiveOperationException | RuntimeException | LinkageError e) {
-            throw error("creating " + w[1] + " failed: " + describe(e));
+            throw error("creating " + className + " failed: " + describe(e));
         }
         current = o;
         currentType = type;
@@ -245,6 +268,170 @@ public final class Parser {
         }
     }
 
+    // ---- the fast path: the plain lines a large scene consists of, read from their bytes ----
+
+    /** The last header the general path read: its type, class name and class. */
+    private String lastType, lastClassName;
+    private Class<?> lastClass;
+    /** Per class, the fields plain parameter lines have set: name, Field and type keyword. */
+    private final Map<Class<?>, List<FastField>> fastFields = new HashMap<>();
+    private Class<?> fastClass;
+    private List<FastField> fastClassFields;
+    /** The object name a plain ref line last named and its object (a name never changes its object). */
+    private String lastRefName;
+    private Object lastRefTarget;
+
+    private static final int VECTOR = 0, DOUBLE = 1, REF = 2;
+    private static final String[] FAST_TYPES = {"Vector3d", "double", "ref"};
+
+    private record FastField(String name, Field field, String keyword) {
+    }
+
+    /**
+     * Reads an ASCII line [0, n) of {@code b} when it is one of the kinds a large scene consists of,
+     * written plainly (printable ASCII and single spaces, no comment, nothing to strip): a blank line,
+     * an unnamed object header of a class the general path has already read a header of, or a
+     * Vector3d, double or ref parameter of the object being read. Does exactly what the general path
+     * does with the same line, without a String per word. Returns false, having changed nothing, for
+     * any other line and for any line with a mistake: the general path then reads it and reports it.
+     */
+    private boolean fastLine(byte[] b, int n) throws SceneFormatException {
+        if (n == 0) {
+            if (current != null && blankAfter == 0) {
+                blankAfter = line;        // a blank line ends the object
+            }
+            return true;
+        }
+        if (b[0] == ' ' || b[n - 1] == ' ') {
+            return false;
+        }
+        int s1 = -1, s2 = -1;
+        for (int i = 0; i < n; i++) {
+            byte c = b[i];
+            if (c == ' ') {
+                if (b[i - 1] == ' ') {
+                    return false;
+                }
+                if (s1 < 0) {
+                    s1 = i;
+                } else if (s2 < 0) {
+                    s2 = i;
+                }
+            } else if (c < 0x21 || c == 0x7f || c == '#') {     // ASCII only: no byte is above 0x7f
+                return false;
+            }
+        }
+        if (s1 < 0) {
+            return false;
+        }
+        if (s2 < 0) {                     // two words: a header such as "Surface Triangle"
+            if (lastType == null || !equals(b, 0, s1, lastType) || !equals(b, s1 + 1, n, lastClassName)) {
+                return false;
+            }
+            endObject();
+            begin(lastType, lastClassName, lastClass, null);
+            return true;
+        }
+        if (current == null || blankAfter != 0) {
+            return false;
+        }
+        int kind = equals(b, 0, s1, "Vector3d") ? VECTOR : equals(b, 0, s1, "double") ? DOUBLE : equals(b, 0, s1, "ref") ? REF : -1;
+        if (kind < 0) {
+            return false;
+        }
+        FastField ff = fastField(b, s1 + 1, s2);
+        if (ff == null || !ff.keyword.equals(FAST_TYPES[kind]) || currentFields.containsKey(ff.name)) {
+            return false;
+        }
+        Field f = ff.field;
+        int v0 = s2 + 1;
+        Object v;
+        if (kind == VECTOR) {
+            double[] xyz = Tokens.canonicalVector(b, v0, n);
+            if (xyz == null) {
+                return false;
+            }
+            v = new Vector3d(xyz[0], xyz[1], xyz[2]);
+        } else if (kind == DOUBLE) {
+            Class<?> ft = f.getType();
+            if ((ft != double.class && ft != Double.class) || !Tokens.isDecimal(b, v0, n)) {
+                return false;
+            }
+            double d = Tokens.parseDecimal(b, v0, n);
+            if (!Double.isFinite(d)) {
+                return false;
+            }
+            v = d;
+        } else {                          // ref: one word, the name of an earlier object
+            if (lastRefName == null || !equals(b, v0, n, lastRefName)) {
+                for (int i = v0; i < n; i++) {
+                    if (b[i] == ' ') {
+                        return false;
+                    }
+                }
+                String name = new String(b, v0, n - v0, StandardCharsets.ISO_8859_1);
+                Object target = named.get(name);
+                if (target == null) {
+                    return false;
+                }
+                lastRefName = name;
+                lastRefTarget = target;
+            }
+            if (lastRefTarget == current || !f.getType().isInstance(lastRefTarget)) {
+                return false;
+            }
+            v = lastRefTarget;
+        }
+        try {
+            f.set(current, v);
+        } catch (IllegalAccessException | RuntimeException e) {
+            return false;                 // the general path sets it again and reports what fails
+        }
+        currentFields.put(ff.name, line);
+        return true;
+    }
+
+    /** The settable field [from, to) of {@code b} names in the current object's class, or null. */
+    private FastField fastField(byte[] b, int from, int to) {
+        Class<?> c = current.getClass();
+        if (c != fastClass) {
+            fastClass = c;
+            fastClassFields = fastFields.computeIfAbsent(c, k -> new ArrayList<>());
+        }
+        for (FastField e : fastClassFields) {
+            if (equals(b, from, to, e.name)) {
+                return e;
+            }
+        }
+        String name = new String(b, from, to - from, StandardCharsets.ISO_8859_1);
+        Field f;
+        try {
+            f = fields.find(c, name);
+        } catch (Problem p) {
+            return null;
+        }
+        String keyword = Fields.keyword(f.getType());
+        if (keyword == null) {
+            return null;
+        }
+        FastField e = new FastField(name, f, keyword);
+        fastClassFields.add(e);
+        return e;
+    }
+
+    /** Whether bytes [from, to) of {@code b} are the chars of {@code s} (all ASCII). */
+    private static boolean equals(byte[] b, int from, int to, String s) {
+        if (to - from != s.length()) {
+            return false;
+        }
+        for (int i = 0; i < to - from; i++) {
+            if (b[from + i] != s.charAt(i)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
     /** Ends the current object: validates it (init) and adds it to the scene. Problems are reported at its header. */
     private void endObject() throws SceneFormatException {
         if (current == null) {
@@ -254,13 +441,12 @@ public final class Parser {
         current = null;
         int saved = line;
         line = currentLine;
-        String cls = o.getClass().getSimpleName();
         try {
             ((SceneObject) o).init();
         } catch (IllegalArgumentException | IllegalStateException e) {
-            throw error(currentType + " " + cls + ": " + e.getMessage());
+            throw error(currentType + " " + o.getClass().getSimpleName() + ": " + e.getMessage());
         } catch (RuntimeException | LinkageError | AssertionError | StackOverflowError e) {
-            throw error(cls + ".init() failed: " + describe(e));
+            throw error(o.getClass().getSimpleName() + ".init() failed: " + describe(e));
         }
         switch (currentType) {
             case "Camera":
@@ -273,13 +459,13 @@ public final class Parser {
             case "Surface":
                 Surface s = (Surface) o;
                 if (s.material == null) {
-                    throw error(cls + " has no material (expected 'ref material <name>' in the object)");
+                    throw error(o.getClass().getSimpleName() + " has no material (expected 'ref material <name>' in the object)");
                 }
                 boolean flat;
                 try {
                     flat = s.isDegenerate();
                 } catch (RuntimeException | LinkageError e) {
-                    throw error(cls + ".isDegenerate() failed: " + describe(e));
+                    throw error(o.getClass().getSimpleName() + ".isDegenerate() failed: " + describe(e));
                 }
                 if (flat && degenerate++ == 0) {
                     firstDegenerateLine = line;

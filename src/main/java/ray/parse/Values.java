@@ -97,7 +97,7 @@ final class Values {
         if (!isDecimal(s)) {
             throw new Problem(quote(s) + " is not a number for " + what + expected);
         }
-        double d = Double.parseDouble(s);
+        double d = Tokens.parseDecimal(s);
         if (!Double.isFinite(d)) {
             throw new Problem(quote(s) + " is too large for " + what + " (expected a finite number, at most about 1.8e308)");
         }
@@ -137,13 +137,12 @@ final class Values {
 
     /** {@code [x y z]}: three finite numbers in brackets, separated by spaces or commas. */
     static Vector3d parseVector(String s, String what) throws Problem {
-        String head = "malformed vector " + quote(s) + " for " + what + ": ";
         String expected = " (expected [x y z], three numbers in brackets)";
         if (!s.startsWith("[")) {
-            throw new Problem(head + "missing '['" + expected);
+            throw new Problem(malformed(s, what) + "missing '['" + expected);
         }
         if (s.length() < 2 || !s.endsWith("]")) {
-            throw new Problem(head + "missing ']'" + expected);
+            throw new Problem(malformed(s, what) + "missing ']'" + expected);
         }
         List<String> parts = new ArrayList<>(3);
         int i = 1, end = s.length() - 1;
@@ -159,29 +158,34 @@ final class Values {
                         if (i < end) more++;
                         while (i < end && !separator(s.charAt(i))) i++;
                     }
-                    throw new Problem(head + "found " + (3 + more) + " numbers" + expected);
+                    throw new Problem(malformed(s, what) + "found " + (3 + more) + " numbers" + expected);
                 }
                 parts.add(s.substring(start, i));
             }
         }
         if (parts.size() != 3) {
-            throw new Problem(head + "found " + parts.size() + (parts.size() == 1 ? " number" : " numbers") + expected);
+            throw new Problem(malformed(s, what) + "found " + parts.size() + (parts.size() == 1 ? " number" : " numbers") + expected);
         }
         double[] v = new double[3];
         for (int k = 0; k < 3; k++) {
             String p = parts.get(k);
             if (isNonFiniteWord(p)) {
-                throw new Problem(head + quote(p) + " is not a finite number" + expected);
+                throw new Problem(malformed(s, what) + quote(p) + " is not a finite number" + expected);
             }
             if (!isDecimal(p)) {
-                throw new Problem(head + quote(p) + " is not a number" + expected);
+                throw new Problem(malformed(s, what) + quote(p) + " is not a number" + expected);
             }
-            v[k] = Double.parseDouble(p);
+            v[k] = Tokens.parseDecimal(p);
             if (!Double.isFinite(v[k])) {
-                throw new Problem(head + quote(p) + " is too large (expected finite numbers, at most about 1.8e308)");
+                throw new Problem(malformed(s, what) + quote(p) + " is too large (expected finite numbers, at most about 1.8e308)");
             }
         }
         return new Vector3d(v[0], v[1], v[2]);
+    }
+
+    /** The start of every message about a malformed vector (made only when one is reported). */
+    private static String malformed(String s, String what) {
+        return "malformed vector " + quote(s) + " for " + what + ": ";
     }
 
     private static boolean separator(char c) {

@@ -14,9 +14,9 @@ import ray.Scene;
 import ray.surface.Triangle;
 
 /**
- * Plain lines take the parser's fast paths (the String one for any text, the byte one for ASCII
- * files); the same scene written untidily, or read by the general path alone, must mean exactly the
- * same, and every mistake must get the same message on the same line.
+ * Plain ASCII lines read from bytes (a file) take the parser's fast path; text given as a String
+ * always takes the general path. The same scene written untidily, or read by the general path alone,
+ * must mean exactly the same, and every mistake must get the same message on the same line.
  */
 class ParserFastPathTest {
 
@@ -61,6 +61,11 @@ class ParserFastPathTest {
         "Vector3d position [1 2 3]", "Vector3d intensity [5 5 5]", "int radius 3", "String v0 hello", "Vector3d nofield [1 2 3]",
         "Vector3d  v0 [0 0 0]", "Vector3d v0 [0 0 0] ", "# comment", "Vector3d v0 [0 0 0] # c", "double\tradius 2", "Width 9",
         "double radius 2.5", "Surface  Triangle", "Surface Triangle extra words", "ref material", "Vector3d v1",
+        "Surface Triangle t1", "ref material t1", "ref material s1", "ref material s9", "Vector3d v0 [1 2 3 4]", "Vector3d v0 [ 1 2 3]",
+        "double radius +.5", "double radius 5.", "double radius 1e-400", "double radius NaN", "Vector3d v0 [1 2 Infinity]",
+        "ref material m1 ", "  ", "\t", "Vector3d v0 [0 0 0]\r", "Vector3d v\u00e9 [1 2 3]", "# caf\u00e9", "double radius 0x1p3",
+        "double exponent 2", "int exponent 2", "ref base m1", "ref base g", "double Radius 1", "Camera Camera",
+        "Material Glazed", "Material Diffuse", "Surface Triangle#x", "double radius 1#x", "Surface Sphere\u0001",
     };
 
     private static final String[][] BLOCKS = {
@@ -90,7 +95,7 @@ class ParserFastPathTest {
                 b.append('\n');
             }
             String text = b.toString();
-            String viaBytes = outcome(() -> Parser.parse(text.getBytes(StandardCharsets.US_ASCII), "r.txt", new ArrayList<>()));
+            String viaBytes = outcome(() -> Parser.parse(text.getBytes(StandardCharsets.UTF_8), "r.txt", new ArrayList<>()));
             String viaText = outcome(() -> Parser.parse(text, "r.txt", new ArrayList<>()));
             assertEquals(viaText, viaBytes, text);
             if (!viaText.startsWith("error")) {
@@ -98,6 +103,75 @@ class ParserFastPathTest {
             }
         }
         assertEquals(true, ok > 100, "some random scenes should be valid: " + ok);
+    }
+
+    /** Refs the fast path must leave to the general path: to the object itself, to an object of the wrong kind, to nothing. */
+    @Test
+    void plainRefsThatAreWrongGetTheGeneralMessage() {
+        String head = "Width 4\nHeight 3\n\nCamera Camera\n\nMaterial Diffuse d\n\nSurface Sphere s\nref material d\n\n";
+        String[][] cases = {
+            {"Material Glazed b\nref base b\n", "'b' is the object being defined"},
+            {"Material Glazed b\nref base s\n", "'s' is a Sphere, but 'ref base' needs a Material"},
+            {"Material Glazed b\nref base nobody\n", "undefined object 'nobody'"},
+        };
+        for (String[] c : cases) {
+            String text = head + c[0];
+            String viaText = outcome(() -> Parser.parse(text, "r.txt", new ArrayList<>()));
+            assertEquals(true, viaText.contains("r.txt:12: " + c[1]), viaText);
+            assertEquals(viaText, outcome(() -> Parser.parse(text.getBytes(StandardCharsets.US_ASCII), "r.txt", new ArrayList<>())));
+        }
+    }
+
+    /** Line ends, a byte-order mark and a non-ASCII line (read by the general path) among plain ones change nothing. */
+    @Test
+    void lineEndsMarkAndNonAsciiLinesReadTheSame() throws Exception {
+        String expected = outcome(() -> Parser.parse(PLAIN, "p.txt", new ArrayList<>()));
+        String[] variants = {PLAIN.replace("\n", "\r\n"), PLAIN.replace("\n", "\r"), "\ufeff" + PLAIN,
+            PLAIN.replace("Vector3d v1 [1 0 -0.5]", "Vector3d v1 [1 0 -0.5] # caf\u00e9 \u2014 non-ASCII comment")};
+        for (String v : variants) {
+            assertEquals(expected, outcome(() -> Parser.parse(v.getBytes(StandardCharsets.UTF_8), "p.txt", new ArrayList<>())), v);
+        }
+    }
+
+    /** The reader copies a line's bytes in runs: lines across its 64 KB buffer, or as long as allowed, read whole. */
+    @Test
+    void longLinesAcrossTheReadBufferReadWhole() throws Exception {
+        String expected = outcome(() -> Parser.parse(PLAIN, "p.txt", new ArrayList<>()));
+        for (int pad : new int[] {(1 << 16) - 20, (1 << 16) - 9, Limits.MAX_LINE - 2, 100_000}) {
+            String comment = "# " + "x".repeat(Math.min(pad, Limits.MAX_LINE - 2));
+            String text = comment + "\n" + PLAIN;
+            assertEquals(expected, outcome(() -> Parser.parse(text.getBytes(StandardCharsets.UTF_8), "p.txt", new ArrayList<>())), "pad " + pad);
+        }
+    }
+
+    /** The limits at a line's length, as the byte-at-a-time reader had them: in chars, and at 3 x MAX_LINE + 1 bytes. */
+    @Test
+    void lineLengthLimitsAreWhereTheyWere() {
+        String ok = "# " + "x".repeat(Limits.MAX_LINE - 2) + "\n" + PLAIN;          // exactly MAX_LINE chars
+        assertEquals(outcome(() -> Parser.parse(PLAIN, "p.txt", new ArrayList<>())),
+                outcome(() -> Parser.parse(ok.getBytes(StandardCharsets.UTF_8), "p.txt", new ArrayList<>())));
+        String tooLong = PLAIN + "# " + "x".repeat(Limits.MAX_LINE - 1) + "\n";     // one char more, on line 16
+        SceneFormatException e = assertThrows(SceneFormatException.class,
+                () -> Parser.parse(tooLong.getBytes(StandardCharsets.UTF_8), "p.txt", new ArrayList<>()));
+        assertEquals("p.txt:16: line is longer than 65,536 characters (expected at most 65,536; is this a scene file?)", e.getMessage());
+        // 3 x MAX_LINE + 1 bytes are read before a line is refused unread: a bad byte that is the last of them is not UTF-8
+        byte[] head = "# ".getBytes(StandardCharsets.UTF_8);
+        byte[] line = new byte[3 * Limits.MAX_LINE + 1 + 1];
+        System.arraycopy(head, 0, line, 0, 2);
+        for (int i = 2; i < 3 * Limits.MAX_LINE; i += 2) {
+            line[i] = (byte) 0xC3;                // \u00e9, two bytes
+            line[i + 1] = (byte) 0xA9;
+        }
+        line[3 * Limits.MAX_LINE] = (byte) 0xC3;  // a lead byte with nothing after it
+        line[3 * Limits.MAX_LINE + 1] = '\n';
+        SceneFormatException bad = assertThrows(SceneFormatException.class, () -> Parser.parse(line, "p.txt", new ArrayList<>()));
+        assertEquals("p.txt:1: not UTF-8 text (byte 0xC3); expected a text scene file saved as UTF-8", bad.getMessage());
+        // one more byte on that line and it is refused as too long
+        byte[] longer = java.util.Arrays.copyOf(line, line.length + 1);
+        longer[longer.length - 2] = 'x';
+        longer[longer.length - 1] = '\n';
+        SceneFormatException tooMany = assertThrows(SceneFormatException.class, () -> Parser.parse(longer, "p.txt", new ArrayList<>()));
+        assertEquals("p.txt:1: line is longer than 65,536 characters (expected at most 65,536; is this a scene file?)", tooMany.getMessage());
     }
 
     private interface Parse {

@@ -1,14 +1,18 @@
 package ray.parse;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertDoesNotThrow;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
+import java.nio.charset.StandardCharsets;
 import java.util.Random;
+import javax.vecmath.Vector3d;
 import org.junit.jupiter.api.Test;
 
 /**
- * The parser's regex-free helpers must give exactly what the regular expressions and
- * {@code Double.parseDouble} they replace give; any difference would change what a scene means.
+ * The parser's fast number reading must give exactly what {@code Values.isDecimal},
+ * {@code Double.parseDouble} and {@code Values.parseVector} give; any difference would change what a
+ * scene means.
  */
 class TokensTest {
 
@@ -23,35 +27,27 @@ class TokensTest {
         return b.toString();
     }
 
-    /** Guards the leading-empty, limit and trailing-empty rules of Pattern.split. */
-    @Test
-    void splitMatchesRegexSplitOnRandomStrings() {
-        Random r = new Random(465);
-        for (int k = 0; k < 200_000; k++) {
-            String s = randomString(r, 12);
-            for (int limit : new int[] {0, 1, 2, 3, -1}) {
-                assertArrayEquals(s.split("\\s+", limit), Tokens.split(s, false, limit), () -> "'" + s + "' limit " + limit);
-                assertArrayEquals(s.split("[\\s,]+", limit), Tokens.split(s, true, limit), () -> "'" + s + "' commas, limit " + limit);
-            }
-        }
+    /** The String and the byte forms both give parseDouble's bits; the byte form reads the number inside other bytes. */
+    private static void assertBitIdentical(String s) {
+        long expected = Double.doubleToRawLongBits(Double.parseDouble(s));
+        assertEquals(expected, Double.doubleToRawLongBits(Tokens.parseDecimal(s)), s);
+        byte[] b = ("x " + s + " y").getBytes(StandardCharsets.US_ASCII);
+        assertEquals(true, Tokens.isDecimal(b, 2, 2 + s.length()), s);
+        assertEquals(expected, Double.doubleToRawLongBits(Tokens.parseDecimal(b, 2, 2 + s.length())), s);
     }
 
+    /** The byte form of isDecimal accepts exactly what Values.isDecimal accepts. */
     @Test
-    void splitOfTypicalLinesGivesTheirWords() {
-        assertArrayEquals(new String[] {"Vector3d", "v0", "[1 2 3]"}, Tokens.split("Vector3d v0 [1 2 3]", false, 3));
-        assertArrayEquals(new String[] {"1", "2", "3"}, Tokens.split("1,  2\t3", true, 0));
-        assertArrayEquals(new String[] {"", "1"}, Tokens.split(",1,", true, 0));
-        assertArrayEquals(new String[] {""}, Tokens.split("", true, 0));
-    }
-
-    @Test
-    void isIntegerMatchesTheRegex() {
+    void byteIsDecimalAgreesWithValuesIsDecimal() {
         Random r = new Random(7);
-        for (int k = 0; k < 100_000; k++) {
-            String s = randomString(r, 5);
-            assertEquals(s.matches("[+-]?[0-9]+"), Tokens.isInteger(s), () -> "'" + s + "'");
+        for (int k = 0; k < 200_000; k++) {
+            String s = randomString(r, 6);
+            byte[] b = ("#" + s + "#").getBytes(StandardCharsets.UTF_8);
+            if (b.length != s.length() + 2) {
+                continue;                       // not ASCII: the byte path never sees it
+            }
+            assertEquals(Values.isDecimal(s), Tokens.isDecimal(b, 1, 1 + s.length()), () -> "'" + s + "'");
         }
-        assertEquals(false, Tokens.isInteger("\u0661"));   // an Arabic-Indic digit is not [0-9]
     }
 
     /** Bit-for-bit equality with parseDouble, including -0, long mantissas and far exponents. */
@@ -62,7 +58,7 @@ class TokensTest {
             "123456789012345", "1234567890123456", "0.000000000000000000000001", "1.7976931348623157e308", "4.9e-324",
             "2.2250738585072014E-308", "1e-22", "1e-23", "999999999999999e22", "0.12345", "-12.345e-3", "00000000000000000001.5"};
         for (String s : fixed) {
-            assertEquals(Double.doubleToRawLongBits(Double.parseDouble(s)), Double.doubleToRawLongBits(Tokens.parseDecimal(s)), s);
+            assertBitIdentical(s);
         }
         for (int k = 0; k < 300_000; k++) {
             StringBuilder b = new StringBuilder();
@@ -82,29 +78,8 @@ class TokensTest {
             if (!Values.isDecimal(s)) {
                 continue;
             }
-            assertEquals(Double.doubleToRawLongBits(Double.parseDouble(s)), Double.doubleToRawLongBits(Tokens.parseDecimal(s)), s);
+            assertBitIdentical(s);
         }
-    }
-
-    /** The fast path may only take lines on which the general path would see the very same words. */
-    @Test
-    void canonicalWordsAgreeWithStripAndSplit() {
-        Random r = new Random(11);
-        String alphabet = "ab #\t[]1.";
-        int taken = 0;
-        for (int k = 0; k < 200_000; k++) {
-            int n = r.nextInt(10);
-            StringBuilder b = new StringBuilder();
-            for (int i = 0; i < n; i++) b.append(alphabet.charAt(r.nextInt(alphabet.length())));
-            String line = b.toString();
-            String[] words = Tokens.canonicalWords(line);
-            if (words == null) continue;
-            taken++;
-            assertEquals(-1, line.indexOf('#'), line);
-            assertEquals(line.strip(), line, line);
-            assertArrayEquals(line.split("\\s+", 3), words, line);
-        }
-        assertEquals(true, taken > 10_000, "the fast path should take most plain lines");
     }
 
     @Test
@@ -118,19 +93,26 @@ class TokensTest {
             for (int i = 0; i < n; i++) b.append(alphabet.charAt(r.nextInt(alphabet.length())));
             b.append(']');
             String s = b.toString();
-            double[] v = Tokens.canonicalVector(s);
+            double[] v = canonicalVector(s);
             if (v == null) continue;
             taken++;
-            String[] parts = s.substring(1, s.length() - 1).strip().split("[\\s,]+");
-            assertEquals(3, parts.length, s);
-            for (int i = 0; i < 3; i++) {
-                assertEquals(true, Values.isDecimal(parts[i]), s);
-                assertEquals(Double.doubleToRawLongBits(Double.parseDouble(parts[i])), Double.doubleToRawLongBits(v[i]), s);
-            }
+            // what the general path reads: the same three numbers, bit for bit
+            Vector3d g = assertDoesNotThrow(() -> Values.parseVector(s, "v"), s);
+            assertEquals(Double.doubleToRawLongBits(g.x), Double.doubleToRawLongBits(v[0]), s);
+            assertEquals(Double.doubleToRawLongBits(g.y), Double.doubleToRawLongBits(v[1]), s);
+            assertEquals(Double.doubleToRawLongBits(g.z), Double.doubleToRawLongBits(v[2]), s);
         }
         assertEquals(true, taken > 100, "some random vectors are plain");
-        assertArrayEquals(new double[] {1, -2.5, 3e-3}, Tokens.canonicalVector("[1 -2.5 3e-3]"));
-        assertEquals(null, Tokens.canonicalVector("[1, 2, 3]"));      // commas: the general path's job
-        assertEquals(null, Tokens.canonicalVector("[1 2 1e999]"));    // too large: the general path reports it
+        assertArrayEquals(new double[] {1, -2.5, 3e-3}, canonicalVector("[1 -2.5 3e-3]"));
+        assertEquals(null, canonicalVector("[1, 2, 3]"));      // commas: the general path's job
+        assertEquals(null, canonicalVector("[1 2 1e999]"));    // too large: the general path reports it
+        assertEquals(null, canonicalVector("[ 1 2 3]"));       // untidy: the general path's job
+        assertEquals(null, canonicalVector("[1 2 3 4]"));      // four numbers: the general path reports it
+    }
+
+    /** Tokens.canonicalVector of {@code s} written in the middle of other bytes, as in a line. */
+    private static double[] canonicalVector(String s) {
+        byte[] b = ("Vector3d v " + s + "").getBytes(StandardCharsets.US_ASCII);
+        return Tokens.canonicalVector(b, 11, b.length);
     }
 }
