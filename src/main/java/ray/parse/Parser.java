@@ -13,7 +13,6 @@ import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
-import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
@@ -52,7 +51,9 @@ public final class Parser {
     private Object current;
     private String currentType;
     private int currentLine;
-    private final Set<String> currentFields = new HashSet<>();
+    /** Names of the fields the current object has set so far (few: a linear search, no allocation). */
+    private String[] currentFields = new String[8];
+    private int currentFieldCount;
     private int cameraLine;
     private int degenerate;
     private int firstDegenerateLine;
@@ -289,7 +290,7 @@ public final class Parser {
             return false;
         }
         Object[] field = fastField(b, s1 + 1, s2);
-        if (field == null || currentFields.contains((String) field[1])) {
+        if (field == null || fieldSet((String) field[1])) {
             return false;
         }
         String fieldName = (String) field[1];
@@ -335,9 +336,9 @@ public final class Parser {
             }
             v = lastRefTarget;
         }
-        currentFields.add(fieldName);
+        addField(fieldName);
         try {
-            f.set(current, v);
+            ((Setter) field[3]).set(f, current, v);
         } catch (IllegalAccessException | RuntimeException e) {
             throw error("cannot set field '" + fieldName + "': " + describe(e));
         }
@@ -360,7 +361,7 @@ public final class Parser {
         } catch (ClassResolver.Problem p) {
             return null;
         }
-        Object[] e = {java.util.Arrays.copyOfRange(b, from, to), name, f};
+        Object[] e = {java.util.Arrays.copyOfRange(b, from, to), name, f, setterFor(c, f)};
         known.add(e);
         return e;
     }
@@ -379,6 +380,53 @@ public final class Parser {
 
     private static boolean equals(byte[] b, int from, int to, byte[] w) {
         return java.util.Arrays.equals(b, from, to, w, 0, w.length);
+    }
+
+    private boolean fieldSet(String name) {
+        for (int i = 0; i < currentFieldCount; i++) {
+            String f = currentFields[i];
+            if (f == name || f.equals(name)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private void addField(String name) {
+        if (currentFieldCount == currentFields.length) {
+            currentFields = java.util.Arrays.copyOf(currentFields, 2 * currentFieldCount);
+        }
+        currentFields[currentFieldCount++] = name;
+    }
+
+    /**
+     * Sets a field found by {@link Fields#find}: reflection in general; for the fields of the built-in
+     * classes that large scenes are made of, a plain assignment (exactly those classes, not subclasses,
+     * which may declare fields of the same name).
+     */
+    private interface Setter {
+        void set(Field f, Object o, Object v) throws IllegalAccessException;
+    }
+
+    private static final Setter REFLECTIVE = Field::set;
+
+    private static Setter setterFor(Class<?> c, Field f) {
+        if (c == ray.surface.Triangle.class && f.getDeclaringClass() == ray.surface.Triangle.class) {
+            switch (f.getName()) {
+                case "v0": return (x, o, v) -> ((ray.surface.Triangle) o).v0 = (Vector3d) v;
+                case "v1": return (x, o, v) -> ((ray.surface.Triangle) o).v1 = (Vector3d) v;
+                case "v2": return (x, o, v) -> ((ray.surface.Triangle) o).v2 = (Vector3d) v;
+                default: return REFLECTIVE;
+            }
+        }
+        if (c == ray.surface.Sphere.class && f.getDeclaringClass() == ray.surface.Sphere.class && f.getName().equals("center")) {
+            return (x, o, v) -> ((ray.surface.Sphere) o).center = (Vector3d) v;
+        }
+        if ((c == ray.surface.Triangle.class || c == ray.surface.Sphere.class) && f.getDeclaringClass() == Surface.class
+                && f.getName().equals("material")) {
+            return (x, o, v) -> ((Surface) o).material = (Material) v;
+        }
+        return REFLECTIVE;
     }
 
     // ---- objects ----
@@ -409,12 +457,16 @@ public final class Parser {
         }
         Object o;
         try {
-            Constructor<?> k = constructors.get(c);
-            if (k == null) {
-                k = c.getConstructor();
-                constructors.put(c, k);
+            if (c == ray.surface.Triangle.class) {
+                o = new ray.surface.Triangle();    // the class most objects of a large scene have: no reflection
+            } else {
+                Constructor<?> k = constructors.get(c);
+                if (k == null) {
+                    k = c.getConstructor();
+                    constructors.put(c, k);
+                }
+                o = k.newInstance();
             }
-            o = k.newInstance();
         } catch (InvocationTargetException e) {
             throw error("creating " + tok[1] + " failed: " + describe(e.getCause()));
         } catch (ReflectiveOperationException | RuntimeException | LinkageError e) {
@@ -423,7 +475,7 @@ public final class Parser {
         current = o;
         currentType = type;
         currentLine = line;
-        currentFields.clear();
+        currentFieldCount = 0;
         if (name != null) {
             named.put(name, o);
         }
@@ -441,9 +493,10 @@ public final class Parser {
         } catch (ClassResolver.Problem p) {
             throw error(p.getMessage());
         }
-        if (!currentFields.add(fieldName)) {
+        if (fieldSet(fieldName)) {
             throw error("field '" + fieldName + "' is set twice in this object");
         }
+        addField(fieldName);
         Class<?> ft = f.getType();
         Object v;
         switch (type) {
