@@ -144,16 +144,52 @@ public final class Parser {
     }
 
     private Scene run(String text, byte[] ascii) throws SceneFormatException {
+        Prescan pre = ascii != null && ascii.length >= Prescan.MIN_BYTES && Runtime.getRuntime().availableProcessors() > 1
+                ? new Prescan(text, ascii) : null;
+        try {
+            if (pre != null) {
+                pre.start();
+            }
+            return run(text, ascii, pre);
+        } finally {
+            if (pre != null) {
+                pre.stop = true;
+            }
+        }
+    }
+
+    private Scene run(String text, byte[] ascii, Prescan pre) throws SceneFormatException {
         int pos = 0, len = text.length();
         boolean any = false;
+        Prescan.Chunk chunk = null;
+        int k = 0;
         while (pos < len || (pos == len && line == 0)) {
-            int end = text.indexOf('\n', pos);
-            if (end < 0) {
-                end = len;
+            int end;
+            Vector3d vec = null;
+            long spaces = 0;
+            if (pre != null) {
+                if (chunk == null || k == chunk.count) {
+                    chunk = pre.next();
+                    k = 0;
+                }
+                end = chunk.end[k];
+                vec = chunk.vec[k];
+                spaces = chunk.spaces[k];
+                k++;
+            } else {
+                end = text.indexOf('\n', pos);
+                if (end < 0) {
+                    end = len;
+                }
             }
             line++;
             if (end - pos > Limits.MAX_LINE) {
                 throw error("line is " + (end - pos) + " characters long (at most " + Limits.MAX_LINE + " expected)");
+            }
+            if (vec != null && fastVector(ascii, pos, end, spaces, vec)) {
+                any = true;
+                pos = end + 1;
+                continue;
             }
             if (ascii != null && fastLine(ascii, pos, end)) {
                 any |= end > pos;
@@ -240,25 +276,11 @@ public final class Parser {
             endObject();        // a blank line ends the object
             return true;
         }
-        if (b[from] == ' ' || b[to - 1] == ' ') {
+        long spaces = plainSpaces(b, from, to);
+        if (spaces < 0) {
             return false;
         }
-        int s1 = -1, s2 = -1;
-        for (int i = from; i < to; i++) {
-            byte c = b[i];
-            if (c == ' ') {
-                if (b[i - 1] == ' ') {
-                    return false;
-                }
-                if (s1 < 0) {
-                    s1 = i;
-                } else if (s2 < 0) {
-                    s2 = i;
-                }
-            } else if (c < 0x21 || c > 0x7E || c == '#') {
-                return false;
-            }
-        }
+        int s1 = (int) (spaces >>> 32) - 1, s2 = (int) spaces - 1;
         if (s1 < 0) {
             return false;
         }
@@ -343,6 +365,147 @@ public final class Parser {
             throw error("cannot set field '" + fieldName + "': " + describe(e));
         }
         return true;
+    }
+
+    /**
+     * Whether non-empty line [from, to) is plain (printable ASCII and single spaces, no '#', no space at
+     * either end): -1 if not, else the positions of its first two spaces (each -1 when absent), plus
+     * one, packed as (s1 + 1) << 32 | (s2 + 1).
+     */
+    static long plainSpaces(byte[] b, int from, int to) {
+        if (b[from] == ' ' || b[to - 1] == ' ') {
+            return -1;
+        }
+        int s1 = -1, s2 = -1;
+        for (int i = from; i < to; i++) {
+            byte c = b[i];
+            if (c == ' ') {
+                if (b[i - 1] == ' ') {
+                    return -1;
+                }
+                if (s1 < 0) {
+                    s1 = i;
+                } else if (s2 < 0) {
+                    s2 = i;
+                }
+            } else if (c < 0x21 || c > 0x7E || c == '#') {
+                return -1;
+            }
+        }
+        return (long) (s1 + 1) << 32 | (s2 + 1);
+    }
+
+    /**
+     * {@link #fastLine} for a plain {@code Vector3d <field> [x y z]} line whose vector the prescan has
+     * already read: the same checks and the same effect, or false with nothing changed.
+     */
+    private boolean fastVector(byte[] b, int from, int to, long spaces, Vector3d v) throws SceneFormatException {
+        if (current == null) {
+            return false;
+        }
+        int s1 = (int) (spaces >>> 32) - 1, s2 = (int) spaces - 1;
+        Object[] field = fastField(b, s1 + 1, s2);
+        if (field == null || fieldSet((String) field[1])) {
+            return false;
+        }
+        String fieldName = (String) field[1];
+        Field f = (Field) field[2];
+        if (!f.getType().isAssignableFrom(Vector3d.class)) {
+            return false;
+        }
+        addField(fieldName);
+        try {
+            ((Setter) field[3]).set(f, current, v);
+        } catch (IllegalAccessException | RuntimeException e) {
+            throw error("cannot set field '" + fieldName + "': " + describe(e));
+        }
+        return true;
+    }
+
+    /**
+     * Reads a large ASCII file's lines ahead, on a second core, while the parser works through them:
+     * where each line ends, and for plain {@code Vector3d <field> [x y z]} lines the vector (three
+     * quarters of a triangle mesh's lines). Everything it computes depends on the bytes alone; the
+     * parser still makes every decision, in line order, and reads any line the prescan did not (or
+     * any line whose vector it cannot use) exactly as without it.
+     */
+    static final class Prescan extends Thread {
+        static final int MIN_BYTES = 1 << 18;
+        static final int CHUNK = 4096;
+
+        static final class Chunk {
+            final int[] end = new int[CHUNK];
+            final long[] spaces = new long[CHUNK];
+            final Vector3d[] vec = new Vector3d[CHUNK];
+            int count;
+        }
+
+        private final String text;
+        private final byte[] b;
+        private final java.util.concurrent.LinkedBlockingQueue<Object> out = new java.util.concurrent.LinkedBlockingQueue<>();
+        volatile boolean stop;
+
+        Prescan(String text, byte[] b) {
+            super("scene-prescan");
+            setDaemon(true);
+            this.text = text;
+            this.b = b;
+        }
+
+        @Override
+        public void run() {
+            try {
+                int pos = 0, len = b.length, lines = 0;
+                Chunk c = new Chunk();
+                // the same line iteration as the parser's
+                while ((pos < len || (pos == len && lines == 0)) && !stop) {
+                    int end = text.indexOf('\n', pos);
+                    if (end < 0) {
+                        end = len;
+                    }
+                    lines++;
+                    int k = c.count++;
+                    c.end[k] = end;
+                    if (end - pos > 9 && end - pos <= Limits.MAX_LINE && b[pos] == 'V' && Parser.equals(b, pos, pos + 9, "Vector3d ")) {
+                        long spaces = plainSpaces(b, pos, end);
+                        int s2 = (int) spaces - 1;
+                        if (spaces >= 0 && s2 >= 0) {
+                            double[] xyz = Tokens.canonicalVector(b, s2 + 1, end);
+                            if (xyz != null) {
+                                c.spaces[k] = spaces;
+                                c.vec[k] = new Vector3d(xyz[0], xyz[1], xyz[2]);
+                            }
+                        }
+                    }
+                    if (c.count == CHUNK) {
+                        out.add(c);
+                        c = new Chunk();
+                    }
+                    pos = end + 1;
+                }
+                out.add(c);
+            } catch (RuntimeException | Error e) {
+                out.add(e);
+            }
+        }
+
+        /** The next chunk of lines, waiting for it if need be. */
+        Chunk next() {
+            Object o;
+            try {
+                o = out.take();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new IllegalStateException("interrupted while reading the scene", e);
+            }
+            if (o instanceof Chunk) {
+                return (Chunk) o;
+            }
+            if (o instanceof Error) {
+                throw (Error) o;
+            }
+            throw (RuntimeException) o;
+        }
     }
 
     /** {bytes, name, Field} of the current object's field named by b[from, to), or null if it has none (the general path reports it). */

@@ -67,9 +67,9 @@ class ParserFastPathTest {
         {"Surface Triangle", "Vector3d v0 [0 0 0]", "Vector3d v1 [1 0 -0.5]", "Vector3d v2 [0 1 2.5e-1]", "ref material m1"},
         {"Surface Triangle", "Vector3d v0 [0, 0, 0]", "Vector3d  v1 [1 0 0]", "Vector3d v2 [0 1 0]  # c", "ref material m2"},
         {"Surface Sphere", "Vector3d center [0.5 -1 2]", "double radius 0.25", "ref material g"},
-        {"Surface Sphere s9", "double radius 3", "ref material m2"},
+        {"Surface Sphere", "double radius 3", "ref material m2"},
         {"Material Diffuse", "Vector3d diffuseColor [0.2 0.3 0.4]"},
-        {"Material BlinnPhong", "double exponent 20", "ref base m2"},
+        {"Material BlinnPhong", "double exponent 20", "Vector3d specularColor [1 1 1]"},
         {"Light PointLight", "Vector3d position [1 2 3]", "Vector3d intensity [5 5 5]"},
     };
 
@@ -98,6 +98,35 @@ class ParserFastPathTest {
             }
         }
         assertEquals(true, ok > 100, "some random scenes should be valid: " + ok);
+    }
+
+    /** A file big enough for the prescan thread: the same scene, or the same message, as the String path. */
+    @Test
+    void largeFilesReadTheSameWithTheLineReaderThread() throws Exception {
+        Random r = new Random(100);
+        int valid = 0;
+        for (int k = 0; k < 12; k++) {
+            StringBuilder b = new StringBuilder("Width 8\nHeight 6\n\nCamera Camera\n\nMaterial Diffuse m1\n\nMaterial BlinnPhong m2\n\nMaterial Glazed g\n\n");
+            boolean corrupt = k % 3 != 0;
+            while (b.length() < Parser.Prescan.MIN_BYTES + 50_000) {
+                String[] block = BLOCKS[r.nextInt(BLOCKS.length)];
+                for (String line : block) {
+                    b.append(corrupt && r.nextInt(20_000) == 0 ? LINES[r.nextInt(LINES.length)] : line).append('\n');
+                }
+                b.append('\n');
+            }
+            if (k % 4 == 1) {
+                b.setLength(b.length() - 1);   // no newline at the end
+            }
+            String text = b.toString();
+            String viaBytes = outcome(() -> Parser.parse(text.getBytes(StandardCharsets.US_ASCII), "big.txt", new ArrayList<>()));
+            String viaText = outcome(() -> Parser.parse(text, "big.txt", new ArrayList<>()));
+            assertEquals(viaText, viaBytes);
+            if (!viaText.startsWith("error")) {
+                valid++;
+            }
+        }
+        assertEquals(true, valid >= 4, "the uncorrupted files must be valid scenes: " + valid);
     }
 
     private interface Parse {
