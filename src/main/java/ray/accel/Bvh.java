@@ -167,6 +167,7 @@ public final class Bvh implements Accelerator {
         double ox = ray.origin.x, oy = ray.origin.y, oz = ray.origin.z;
         double dx = ray.direction.x, dy = ray.direction.y, dz = ray.direction.z;
         double ix = 1 / dx, iy = 1 / dy, iz = 1 / dz;
+        double aa = dx * dx + dy * dy + dz * dz;   // |d|^2, for the spheres' clear-miss test
         // near/far plane offsets in a 6-float box, from the direction's signs
         int nx = ix < 0 ? 3 : 0, ny = iy < 0 ? 4 : 1, nz = iz < 0 ? 5 : 2;
         int fx = 3 - nx, fy = 5 - ny, fz = 7 - nz;
@@ -285,8 +286,14 @@ public final class Bvh implements Accelerator {
                         }
                         case SPHERE: {
                             int so = 4 * idx;
-                            double th = Sphere.hit(sv[so], sv[so + 1], sv[so + 2], sv[so + 3],
-                                    ox, oy, oz, dx, dy, dz, tMin, best);
+                            double scx = sv[so], scy = sv[so + 1], scz = sv[so + 2], sr = sv[so + 3];
+                            // Sphere.hit's division-free clear-miss test, written out (C1 would call)
+                            double gx = ox - scx, gy = oy - scy, gz = oz - scz;
+                            double qx = gy * dz - gz * dy, qy = gz * dx - gx * dz, qz = gx * dy - gy * dx;
+                            if (qx * qx + qy * qy + qz * qz > aa * (sr * sr * (1 + 1e-6) + 1e-6 * (gx * gx + gy * gy + gz * gz))) {
+                                break;
+                            }
+                            double th = Sphere.hit(scx, scy, scz, sr, ox, oy, oz, dx, dy, dz, tMin, best);
                             if (th < best || (th == best && i < hitSlot)) {
                                 best = th;
                                 hit = p;
@@ -403,6 +410,7 @@ public final class Bvh implements Accelerator {
         double ox = ray.origin.x, oy = ray.origin.y, oz = ray.origin.z;
         double dx = ray.direction.x, dy = ray.direction.y, dz = ray.direction.z;
         double ix = 1 / dx, iy = 1 / dy, iz = 1 / dz;
+        double aa = dx * dx + dy * dy + dz * dz;   // |d|^2, for the spheres' clear-miss test
         int nx = ix < 0 ? 3 : 0, ny = iy < 0 ? 4 : 1, nz = iz < 0 ? 5 : 2;
         int fx = 3 - nx, fy = 5 - ny, fz = 7 - nz;
         if (!(slabs(rootBox, 0, nx, ny, nz, fx, fy, fz, ox, oy, oz, ix, iy, iz, tMin, tMax) <= Double.MAX_VALUE)) {
@@ -495,7 +503,14 @@ public final class Bvh implements Accelerator {
                         }
                         case SPHERE: {
                             int so = 4 * idx;
-                            double th = Sphere.hit(sv[so], sv[so + 1], sv[so + 2], sv[so + 3], ox, oy, oz, dx, dy, dz, tMin, tMax);
+                            double scx = sv[so], scy = sv[so + 1], scz = sv[so + 2], sr = sv[so + 3];
+                            // Sphere.hit's division-free clear-miss test, written out (C1 would call)
+                            double gx = ox - scx, gy = oy - scy, gz = oz - scz;
+                            double qx = gy * dz - gz * dy, qy = gz * dx - gx * dz, qz = gx * dy - gy * dx;
+                            if (qx * qx + qy * qy + qz * qz > aa * (sr * sr * (1 + 1e-6) + 1e-6 * (gx * gx + gy * gy + gz * gz))) {
+                                break;
+                            }
+                            double th = Sphere.hit(scx, scy, scz, sr, ox, oy, oz, dx, dy, dz, tMin, tMax);
                             if (th == th) {
                                 return true;
                             }

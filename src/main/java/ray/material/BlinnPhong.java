@@ -49,18 +49,8 @@ public class BlinnPhong extends Diffuse {
     }
 
     @Override
-    double specularColorX() {
-        return specularColor.x;
-    }
-
-    @Override
-    double specularColorY() {
-        return specularColor.y;
-    }
-
-    @Override
-    double specularColorZ() {
-        return specularColor.z;
+    Vector3d specularColorOrNull() {
+        return java.util.Objects.requireNonNull(specularColor, "specularColor");   // a highlight, always
     }
 
     @Override

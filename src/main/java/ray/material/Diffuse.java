@@ -40,6 +40,7 @@ public class Diffuse extends Material {
         double r = ambientColor.x * ia.x, g = ambientColor.y * ia.y, b = ambientColor.z * ia.z;
         Vector3d n = rec.normal;
         LightSample s = ctx.lightSample;
+        Vector3d ks = specularColorOrNull();   // null: no highlight term at all (plain Diffuse)
         java.util.List<Light> lights = scene.lights;
         // an index loop: a for-each would allocate an Iterator per shading point wherever the JIT does
         // not remove it (C1, the launcher's compiler, has no escape analysis)
@@ -56,10 +57,17 @@ public class Diffuse extends Material {
                     continue;
                 }
                 Vector3d li = s.intensity;
-                double spec = specular(ray, n, l);
-                r += li.x * (diffuseColor.x * nl + specularColorX() * spec);
-                g += li.y * (diffuseColor.y * nl + specularColorY() * spec);
-                b += li.z * (diffuseColor.z * nl + specularColorZ() * spec);
+                if (ks == null) {
+                    // k_d nl + 0: the same sums as with a zero highlight (0 * 0 = +0), without its calls
+                    r += li.x * (diffuseColor.x * nl + 0.0);
+                    g += li.y * (diffuseColor.y * nl + 0.0);
+                    b += li.z * (diffuseColor.z * nl + 0.0);
+                } else {
+                    double spec = specular(ray, n, l);
+                    r += li.x * (diffuseColor.x * nl + ks.x * spec);
+                    g += li.y * (diffuseColor.y * nl + ks.y * spec);
+                    b += li.z * (diffuseColor.z * nl + ks.z * spec);
+                }
             }
         }
         out.set(r, g, b);
@@ -70,16 +78,9 @@ public class Diffuse extends Material {
         return 0;
     }
 
-    double specularColorX() {
-        return 0;
-    }
-
-    double specularColorY() {
-        return 0;
-    }
-
-    double specularColorZ() {
-        return 0;
+    /** k_s, or null when the material has no highlight (then {@link #specular} is never called). */
+    Vector3d specularColorOrNull() {
+        return null;
     }
 
     @Override

@@ -126,7 +126,9 @@ public class Sphere extends Surface {
             rec.normal.set(-nx, -ny, -nz);
         }
         rec.t = t;
-        double m = Math.max(Math.abs(cx), Math.max(Math.abs(cy), Math.abs(cz)));
+        // the largest |coordinate| (plain comparisons: C1 calls Math.max; no NaN or -0 can occur here)
+        double ax = Math.abs(cx), ay = Math.abs(cy), az = Math.abs(cz);
+        double m = ax > ay ? (ax > az ? ax : az) : (ay > az ? ay : az);
         rec.error = ERROR * (m + r);
     }
 

@@ -182,7 +182,10 @@ public class Triangle extends Surface {
         rec.t = t;
         double m = 0;
         for (int i = 0; i < 9; i++) {
-            m = Math.max(m, Math.abs(v[off + i]));
+            double c = Math.abs(v[off + i]);
+            if (c > m) {        // Math.max without the call C1 makes (no NaN or -0 can occur here)
+                m = c;
+            }
         }
         rec.error = ERROR * m;
     }
