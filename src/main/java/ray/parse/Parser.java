@@ -158,67 +158,80 @@ public final class Parser {
         }
     }
 
+    // the line loop's state, in fields so that the loop itself is tiny: the interpreter runs a loop
+    // for tens of thousands of iterations before the JIT replaces it, but compiles a method called
+    // a few hundred times, so the work of a line goes in readLine
+    private String text;
+    private byte[] ascii;
+    private Prescan pre;
+    private Prescan.Chunk chunk;
+    private int chunkIndex;
+    private boolean any;
+
     private Scene run(String text, byte[] ascii, Prescan pre) throws SceneFormatException {
+        this.text = text;
+        this.ascii = ascii;
+        this.pre = pre;
         int pos = 0, len = text.length();
-        boolean any = false;
-        Prescan.Chunk chunk = null;
-        int k = 0;
         while (pos < len || (pos == len && line == 0)) {
-            int end;
-            Vector3d vec = null;
-            long spaces = 0;
-            if (pre != null) {
-                if (chunk == null || k == chunk.count) {
-                    chunk = pre.next();
-                    k = 0;
-                }
-                end = chunk.end[k];
-                vec = chunk.vec[k];
-                spaces = chunk.spaces[k];
-                k++;
-            } else {
-                end = text.indexOf('\n', pos);
-                if (end < 0) {
-                    end = len;
-                }
-            }
-            line++;
-            if (end - pos > Limits.MAX_LINE) {
-                throw error("line is " + (end - pos) + " characters long (at most " + Limits.MAX_LINE + " expected)");
-            }
-            if (vec != null && fastVector(ascii, pos, end, spaces, vec)) {
-                any = true;
-                pos = end + 1;
-                continue;
-            }
-            if (ascii != null && fastLine(ascii, pos, end)) {
-                any |= end > pos;
-                pos = end + 1;
-                continue;
-            }
-            String raw = text.substring(pos, end);
-            pos = end + 1;
-            String[] words = Tokens.canonicalWords(raw);
-            if (words != null) {      // the common case: no comment, single spaces, nothing to strip
-                any = true;
-                statement(raw, words);
-                continue;
-            }
-            String s = stripComment(raw).strip();
-            if (s.isEmpty()) {
-                if (raw.strip().isEmpty()) {
-                    endObject();          // a blank line ends the object; a comment line does not
-                }
-                continue;
-            }
-            any = true;
-            statement(s, Tokens.split(s, false, 3));
+            pos = readLine(pos, len);
         }
         endObject();
         if (!any) {
             throw new SceneFormatException(file, Math.max(1, line), "empty scene file (expected Width, Height and a Camera at least)");
         }
         return finish();
+    }
+
+    /** Reads the line starting at {@code pos}; returns where the next one starts. */
+    private int readLine(int pos, int len) throws SceneFormatException {
+        int end;
+        Vector3d vec = null;
+        long spaces = 0;
+        if (pre != null) {
+            if (chunk == null || chunkIndex == chunk.count) {
+                chunk = pre.next();
+                chunkIndex = 0;
+            }
+            end = chunk.end[chunkIndex];
+            vec = chunk.vec[chunkIndex];
+            spaces = chunk.spaces[chunkIndex];
+            chunkIndex++;
+        } else {
+            end = text.indexOf('\n', pos);
+            if (end < 0) {
+                end = len;
+            }
+        }
+        line++;
+        if (end - pos > Limits.MAX_LINE) {
+            throw error("line is " + (end - pos) + " characters long (at most " + Limits.MAX_LINE + " expected)");
+        }
+        if (vec != null && fastVector(ascii, pos, end, spaces, vec)) {
+            any = true;
+            return end + 1;
+        }
+        if (ascii != null && fastLine(ascii, pos, end)) {
+            any |= end > pos;
+            return end + 1;
+        }
+        String raw = text.substring(pos, end);
+        String[] words = Tokens.canonicalWords(raw);
+        if (words != null) {      // the common case: no comment, single spaces, nothing to strip
+            any = true;
+            statement(raw, words);
+            return end + 1;
+        }
+        String st = stripComment(raw).strip();
+        if (st.isEmpty()) {
+            if (raw.strip().isEmpty()) {
+                endObject();          // a blank line ends the object; a comment line does not
+            }
+            return end + 1;
+        }
+        any = true;
+        statement(st, Tokens.split(st, false, 3));
+        return end + 1;
     }
 
     /** Drops a comment: a '#' at the start of the line or after whitespace. */
@@ -321,7 +334,7 @@ public final class Parser {
         int v0 = s2 + 1;
         Object v;
         if (head == HEADS[0]) {                                  // Vector3d
-            if (!ft.isAssignableFrom(Vector3d.class)) {
+            if (field[4] != Boolean.TRUE) {
                 return false;
             }
             double[] xyz = Tokens.canonicalVector(b, v0, to);
@@ -410,7 +423,7 @@ public final class Parser {
         }
         String fieldName = (String) field[1];
         Field f = (Field) field[2];
-        if (!f.getType().isAssignableFrom(Vector3d.class)) {
+        if (field[4] != Boolean.TRUE) {
             return false;
         }
         addField(fieldName);
@@ -430,7 +443,7 @@ public final class Parser {
      * any line whose vector it cannot use) exactly as without it.
      */
     static final class Prescan extends Thread {
-        static final int MIN_BYTES = 1 << 18;
+        static final int MIN_BYTES = 1 << 22;
         static final int CHUNK = 4096;
 
         static final class Chunk {
@@ -456,37 +469,46 @@ public final class Parser {
         public void run() {
             try {
                 int pos = 0, len = b.length, lines = 0;
-                Chunk c = new Chunk();
-                // the same line iteration as the parser's
+                // the same line iteration as the parser's, a chunk at a time (a method per chunk, so
+                // the JIT compiles it early; see Parser.readLine)
                 while ((pos < len || (pos == len && lines == 0)) && !stop) {
-                    int end = text.indexOf('\n', pos);
-                    if (end < 0) {
-                        end = len;
-                    }
-                    lines++;
-                    int k = c.count++;
-                    c.end[k] = end;
-                    if (end - pos > 9 && end - pos <= Limits.MAX_LINE && b[pos] == 'V' && Parser.equals(b, pos, pos + 9, "Vector3d ")) {
-                        long spaces = plainSpaces(b, pos, end);
-                        int s2 = (int) spaces - 1;
-                        if (spaces >= 0 && s2 >= 0) {
-                            double[] xyz = Tokens.canonicalVector(b, s2 + 1, end);
-                            if (xyz != null) {
-                                c.spaces[k] = spaces;
-                                c.vec[k] = new Vector3d(xyz[0], xyz[1], xyz[2]);
-                            }
-                        }
-                    }
-                    if (c.count == CHUNK) {
-                        out.add(c);
-                        c = new Chunk();
-                    }
-                    pos = end + 1;
+                    Chunk c = new Chunk();
+                    pos = fill(c, pos, len, lines);
+                    lines += c.count;
+                    out.add(c);
                 }
-                out.add(c);
             } catch (RuntimeException | Error e) {
                 out.add(e);
             }
+        }
+
+        /** Fills {@code c} with up to CHUNK lines from {@code pos}; returns where the next line starts. */
+        private int fill(Chunk c, int pos, int len, int lines) {
+            while (c.count < CHUNK && (pos < len || (pos == len && lines + c.count == 0))) {
+                pos = scanLine(c, pos, len);
+            }
+            return pos;
+        }
+
+        private int scanLine(Chunk c, int pos, int len) {
+            int end = text.indexOf('\n', pos);
+            if (end < 0) {
+                end = len;
+            }
+            int k = c.count++;
+            c.end[k] = end;
+            if (end - pos > 9 && end - pos <= Limits.MAX_LINE && b[pos] == 'V' && Parser.equals(b, pos, pos + 9, "Vector3d ")) {
+                long spaces = plainSpaces(b, pos, end);
+                int s2 = (int) spaces - 1;
+                if (spaces >= 0 && s2 >= 0) {
+                    double[] xyz = Tokens.canonicalVector(b, s2 + 1, end);
+                    if (xyz != null) {
+                        c.spaces[k] = spaces;
+                        c.vec[k] = new Vector3d(xyz[0], xyz[1], xyz[2]);
+                    }
+                }
+            }
+            return end + 1;
         }
 
         /** The next chunk of lines, waiting for it if need be. */
@@ -508,7 +530,7 @@ public final class Parser {
         }
     }
 
-    /** {bytes, name, Field} of the current object's field named by b[from, to), or null if it has none (the general path reports it). */
+    /** {bytes, name, Field, Setter, takes a Vector3d} of the current object's field named by b[from, to), or null if it has none (the general path reports it). */
     private Object[] fastField(byte[] b, int from, int to) {
         Class<?> c = current.getClass();
         List<Object[]> known = fastFields.computeIfAbsent(c, k -> new ArrayList<>());
@@ -524,7 +546,8 @@ public final class Parser {
         } catch (ClassResolver.Problem p) {
             return null;
         }
-        Object[] e = {java.util.Arrays.copyOfRange(b, from, to), name, f, setterFor(c, f)};
+        Object[] e = {java.util.Arrays.copyOfRange(b, from, to), name, f, setterFor(c, f),
+            f.getType().isAssignableFrom(Vector3d.class)};   // (a native call: asked once per field)
         known.add(e);
         return e;
     }

@@ -105,7 +105,7 @@ class ParserFastPathTest {
     void largeFilesReadTheSameWithTheLineReaderThread() throws Exception {
         Random r = new Random(100);
         int valid = 0;
-        for (int k = 0; k < 12; k++) {
+        for (int k = 0; k < 6; k++) {
             StringBuilder b = new StringBuilder("Width 8\nHeight 6\n\nCamera Camera\n\nMaterial Diffuse m1\n\nMaterial BlinnPhong m2\n\nMaterial Glazed g\n\n");
             boolean corrupt = k % 3 != 0;
             while (b.length() < Parser.Prescan.MIN_BYTES + 50_000) {
@@ -126,7 +126,7 @@ class ParserFastPathTest {
                 valid++;
             }
         }
-        assertEquals(true, valid >= 4, "the uncorrupted files must be valid scenes: " + valid);
+        assertEquals(true, valid >= 2, "the uncorrupted files must be valid scenes: " + valid);
     }
 
     private interface Parse {
