@@ -233,7 +233,9 @@ public final class Main implements Callable<Integer> {
             err.println(e.getMessage());
             return false;
         }
-        warnings.forEach(err::println);
+        for (String w : warnings) {
+            err.println(w);
+        }
         long t1 = System.nanoTime();
         Renderer renderer = new Renderer(scene).threads(threads);
         Image image;

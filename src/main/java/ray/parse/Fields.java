@@ -16,7 +16,11 @@ final class Fields {
     private final Map<Class<?>, Map<String, Field>> cache = new HashMap<>();
 
     Field find(Class<?> c, String name) throws ClassResolver.Problem {
-        Map<String, Field> byName = cache.computeIfAbsent(c, k -> new HashMap<>());
+        Map<String, Field> byName = cache.get(c);
+        if (byName == null) {      // (no lambda: linking one costs start-up time, see Parser)
+            byName = new HashMap<>();
+            cache.put(c, byName);
+        }
         Field f = byName.get(name);
         if (f != null) {
             return f;

@@ -533,7 +533,11 @@ public final class Parser {
     /** {bytes, name, Field, Setter, takes a Vector3d} of the current object's field named by b[from, to), or null if it has none (the general path reports it). */
     private Object[] fastField(byte[] b, int from, int to) {
         Class<?> c = current.getClass();
-        List<Object[]> known = fastFields.computeIfAbsent(c, k -> new ArrayList<>());
+        List<Object[]> known = fastFields.get(c);
+        if (known == null) {
+            known = new ArrayList<>();
+            fastFields.put(c, known);
+        }
         for (Object[] e : known) {
             if (equals(b, from, to, (byte[]) e[0])) {
                 return e;
@@ -588,31 +592,47 @@ public final class Parser {
     /**
      * Sets a field found by {@link Fields#find}: reflection in general; for the fields of the built-in
      * classes that large scenes are made of, a plain assignment (exactly those classes, not subclasses,
-     * which may declare fields of the same name).
+     * which may declare fields of the same name). A class with a switch rather than lambdas: each
+     * lambda's first use links through method handles, milliseconds of every start-up.
      */
-    private interface Setter {
-        void set(Field f, Object o, Object v) throws IllegalAccessException;
-    }
+    private static final class Setter {
+        static final int REFLECT = 0, TRIANGLE_V0 = 1, TRIANGLE_V1 = 2, TRIANGLE_V2 = 3, SPHERE_CENTER = 4, MATERIAL = 5;
+        static final Setter REFLECTIVE = new Setter(REFLECT);
+        final int kind;
 
-    private static final Setter REFLECTIVE = Field::set;
+        Setter(int kind) {
+            this.kind = kind;
+        }
+
+        void set(Field f, Object o, Object v) throws IllegalAccessException {
+            switch (kind) {
+                case TRIANGLE_V0: ((ray.surface.Triangle) o).v0 = (Vector3d) v; break;
+                case TRIANGLE_V1: ((ray.surface.Triangle) o).v1 = (Vector3d) v; break;
+                case TRIANGLE_V2: ((ray.surface.Triangle) o).v2 = (Vector3d) v; break;
+                case SPHERE_CENTER: ((ray.surface.Sphere) o).center = (Vector3d) v; break;
+                case MATERIAL: ((Surface) o).material = (Material) v; break;
+                default: f.set(o, v);
+            }
+        }
+    }
 
     private static Setter setterFor(Class<?> c, Field f) {
         if (c == ray.surface.Triangle.class && f.getDeclaringClass() == ray.surface.Triangle.class) {
             switch (f.getName()) {
-                case "v0": return (x, o, v) -> ((ray.surface.Triangle) o).v0 = (Vector3d) v;
-                case "v1": return (x, o, v) -> ((ray.surface.Triangle) o).v1 = (Vector3d) v;
-                case "v2": return (x, o, v) -> ((ray.surface.Triangle) o).v2 = (Vector3d) v;
-                default: return REFLECTIVE;
+                case "v0": return new Setter(Setter.TRIANGLE_V0);
+                case "v1": return new Setter(Setter.TRIANGLE_V1);
+                case "v2": return new Setter(Setter.TRIANGLE_V2);
+                default: return Setter.REFLECTIVE;
             }
         }
         if (c == ray.surface.Sphere.class && f.getDeclaringClass() == ray.surface.Sphere.class && f.getName().equals("center")) {
-            return (x, o, v) -> ((ray.surface.Sphere) o).center = (Vector3d) v;
+            return new Setter(Setter.SPHERE_CENTER);
         }
         if ((c == ray.surface.Triangle.class || c == ray.surface.Sphere.class) && f.getDeclaringClass() == Surface.class
                 && f.getName().equals("material")) {
-            return (x, o, v) -> ((Surface) o).material = (Material) v;
+            return new Setter(Setter.MATERIAL);
         }
-        return REFLECTIVE;
+        return Setter.REFLECTIVE;
     }
 
     // ---- objects ----
@@ -627,7 +647,11 @@ public final class Parser {
         if (rest.length > 1) {
             throw error("too many words in the header (expected '" + type + " <ClassName> [name]')");
         }
-        Map<String, Class<?>> ofType = resolved.computeIfAbsent(type, k -> new HashMap<>());
+        Map<String, Class<?>> ofType = resolved.get(type);
+        if (ofType == null) {
+            ofType = new HashMap<>();
+            resolved.put(type, ofType);
+        }
         Class<?> c = ofType.get(tok[1]);
         if (c == null) {
             try {
