@@ -271,31 +271,47 @@ final class BvhBuilder {
         }
         float best = Float.POSITIVE_INFINITY;
         int bestAxis = -1, bestBin = -1;
-        float[] acc = s.acc;
+        float[] rightArea = s.rightArea;
+        int[] rightCount = s.rightCount;
         for (int a = 0; a < 3; a++) {
             if ((a == 0 ? sx : a == 1 ? sy : sz) == 0) {
                 continue;
             }
             int base = a * BINS;
-            // sweep from the right, then from the left
-            empty(acc);
+            // sweep from the right, then from the left (the growing box in locals: C1 keeps calls)
+            float x0 = Float.POSITIVE_INFINITY, y0 = x0, z0 = x0, x1 = Float.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
             int c = 0;
             for (int i = nb - 1; i > 0; i--) {
-                growBox(acc, bb, 6 * (base + i));
+                int o = 6 * (base + i);
+                if (bb[o] < x0) x0 = bb[o];
+                if (bb[o + 1] < y0) y0 = bb[o + 1];
+                if (bb[o + 2] < z0) z0 = bb[o + 2];
+                if (bb[o + 3] > x1) x1 = bb[o + 3];
+                if (bb[o + 4] > y1) y1 = bb[o + 4];
+                if (bb[o + 5] > z1) z1 = bb[o + 5];
                 c += cnt[base + i];
-                s.rightArea[i] = c > 0 ? area(acc) : 0;
-                s.rightCount[i] = c;
+                float wx = x1 - x0, wy = y1 - y0, wz = z1 - z0;
+                rightArea[i] = c > 0 ? wx * wy + wy * wz + wz * wx : 0;
+                rightCount[i] = c;
             }
-            empty(acc);
+            x0 = y0 = z0 = Float.POSITIVE_INFINITY;
+            x1 = y1 = z1 = Float.NEGATIVE_INFINITY;
             c = 0;
             for (int i = 0; i < nb - 1; i++) {
-                growBox(acc, bb, 6 * (base + i));
+                int o = 6 * (base + i);
+                if (bb[o] < x0) x0 = bb[o];
+                if (bb[o + 1] < y0) y0 = bb[o + 1];
+                if (bb[o + 2] < z0) z0 = bb[o + 2];
+                if (bb[o + 3] > x1) x1 = bb[o + 3];
+                if (bb[o + 4] > y1) y1 = bb[o + 4];
+                if (bb[o + 5] > z1) z1 = bb[o + 5];
                 c += cnt[base + i];
-                int r = s.rightCount[i + 1];
+                int r = rightCount[i + 1];
                 if (c == 0 || r == 0) {
                     continue;
                 }
-                float cost = area(acc) * c + s.rightArea[i + 1] * r;
+                float wx = x1 - x0, wy = y1 - y0, wz = z1 - z0;
+                float cost = (wx * wy + wy * wz + wz * wx) * c + rightArea[i + 1] * r;
                 if (cost < best) {
                     best = cost;
                     bestAxis = a;
@@ -307,6 +323,7 @@ final class BvhBuilder {
             return false;
         }
         // the parent's box is the union of any axis's bins
+        float[] acc = s.acc;
         empty(acc);
         int base = bestAxis * BINS;
         for (int i = 0; i < nb; i++) {

@@ -215,10 +215,15 @@ public final class Throughput {
         double[] times = new double[passes], cpu = new double[passes];
         ThreadMXBean mx = ManagementFactory.getThreadMXBean();
         int hits = 0;
+        // a small set (a few thousand mirror rays) is traced several times per pass, so that a pass
+        // lasts long enough to time (and to let the JIT settle) however few rays the scene casts
+        int count = rays.length / STRIDE, repeat = Math.max(1, 200_000 / Math.max(1, count));
         for (int p = -warmups; p < passes; p++) {
             long c0 = mx.getCurrentThreadCpuTime();
             long t0 = System.nanoTime();
-            hits = pass(accel, ctx, r, rec, rays, closest);
+            for (int k = 0; k < repeat; k++) {
+                hits = pass(accel, ctx, r, rec, rays, closest);
+            }
             long t1 = System.nanoTime();
             long c1 = mx.getCurrentThreadCpuTime();
             if (p >= 0) {
@@ -228,7 +233,7 @@ public final class Throughput {
         }
         Arrays.sort(times);
         Arrays.sort(cpu);
-        return new Rate(kind, closest ? "closest hit" : "any hit", rays.length / STRIDE, times[passes / 2], times[0], hits,
+        return new Rate(kind, closest ? "closest hit" : "any hit", count * repeat, times[passes / 2], times[0], hits * repeat,
                 cpu[passes / 2]);
     }
 

@@ -23,7 +23,12 @@ public final class PngWriter {
     public static void write(Image image, Path target) throws IOException {
         Path dir = target.toAbsolutePath().getParent();
         Path tmp = newTempFile(dir, "." + target.getFileName() + ".");
-        Thread cleanup = new Thread(() -> deleteQuietly(tmp));
+        Thread cleanup = new Thread() {     // (not a lambda: linking one costs start-up time)
+            @Override
+            public void run() {
+                deleteQuietly(tmp);
+            }
+        };
         Runtime.getRuntime().addShutdownHook(cleanup);   // Ctrl-C during the write: no stray temp file
         try {
             try (OutputStream out = Files.newOutputStream(tmp)) {

@@ -94,35 +94,39 @@ public final class Renderer {
         for (int t = 0; t < n; t++) {
             TraceContext ctx = new TraceContext(scene.maxDepth);
             contexts.add(ctx);
-            Runnable work = () -> {
-                TraceContext.bind(ctx);
-                Vector3d c = new Vector3d();
-                double[] offsets = new double[2 * scene.samplesPerPixel * scene.samplesPerPixel];
-                try {
-                    for (int tile; !cancelled && (tile = next.getAndIncrement()) < total; ) {
-                        int x0 = (tile % tilesX) * TILE, y0 = (tile / tilesX) * TILE;
-                        int x1 = Math.min(w, x0 + TILE), y1 = Math.min(h, y0 + TILE);
-                        for (int y = y0; y < y1; y++) {
-                            for (int x = x0; x < x1; x++) {
-                                if (tableA != null) {
-                                    renderGridPixel(ctx, x, y, c, tableA, tableB);
-                                } else {
-                                    renderPixel(ctx, x, y, c, offsets);
+            // an anonymous class, not a lambda: linking a lambda costs milliseconds at start-up
+            Runnable work = new Runnable() {
+                @Override
+                public void run() {
+                    TraceContext.bind(ctx);
+                    Vector3d c = new Vector3d();
+                    double[] offsets = new double[2 * scene.samplesPerPixel * scene.samplesPerPixel];
+                    try {
+                        for (int tile; !cancelled && (tile = next.getAndIncrement()) < total; ) {
+                            int x0 = (tile % tilesX) * TILE, y0 = (tile / tilesX) * TILE;
+                            int x1 = Math.min(w, x0 + TILE), y1 = Math.min(h, y0 + TILE);
+                            for (int y = y0; y < y1; y++) {
+                                for (int x = x0; x < x1; x++) {
+                                    if (tableA != null) {
+                                        renderGridPixel(ctx, x, y, c, tableA, tableB);
+                                    } else {
+                                        renderPixel(ctx, x, y, c, offsets);
+                                    }
+                                    image.set(x, y, c.x, c.y, c.z);
                                 }
-                                image.set(x, y, c.x, c.y, c.z);
+                            }
+                            listener.tileDone(image, x0, y0, x1, y1, done.incrementAndGet(), total);
+                        }
+                    } catch (Throwable e) {
+                        synchronized (failure) {
+                            if (failure[0] == null) {
+                                failure[0] = e;
                             }
                         }
-                        listener.tileDone(image, x0, y0, x1, y1, done.incrementAndGet(), total);
+                        cancelled = true;
+                    } finally {
+                        TraceContext.bind(null);
                     }
-                } catch (Throwable e) {
-                    synchronized (failure) {
-                        if (failure[0] == null) {
-                            failure[0] = e;
-                        }
-                    }
-                    cancelled = true;
-                } finally {
-                    TraceContext.bind(null);
                 }
             };
             Thread th = new Thread(null, work, "render-" + t, STACK_BYTES);

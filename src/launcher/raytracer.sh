@@ -1,0 +1,48 @@
+#!/bin/sh
+# Start script for raytracer, written by `gradle installDist` from src/launcher/raytracer.sh.
+# It does what Gradle's generated script does on Linux and macOS, without the process starts that
+# script makes on every launch (uname, basename, which, ulimit, a sed per argument), about 20 ms
+# that a short render waits for (docs/performance.md, "Start-up").
+#   JAVA_HOME                  the Java installation to use (else `java` on the PATH)
+#   JAVA_OPTS, RAYTRACER_OPTS  more JVM options (shell quoting honoured, as in Gradle's scripts)
+#   RAYTRACER_NO_CDS=1         start without the class-data-sharing archive
+
+# The installation: follow symbolic links to this script; its directory's parent.
+app_path=$0
+while [ -h "$app_path" ]; do
+    ls=$(ls -ld -- "$app_path")
+    link=${ls#*' -> '}
+    case $link in
+        /*) app_path=$link ;;
+        *) app_path=${app_path%/*}/$link ;;
+    esac
+done
+case $app_path in
+    */*) app_dir=${app_path%/*} ;;
+    *) app_dir=. ;;
+esac
+saved_pwd=$PWD
+cd -P -- "$app_dir/.." || exit 1
+APP_HOME=$PWD
+cd -- "$saved_pwd" || exit 1
+
+if [ -n "$JAVA_HOME" ]; then
+    JAVACMD=$JAVA_HOME/bin/java
+    if [ ! -x "$JAVACMD" ]; then
+        echo "ERROR: JAVA_HOME is set to an invalid directory: $JAVA_HOME" >&2
+        exit 1
+    fi
+else
+    JAVACMD=java
+fi
+
+CLASSPATH=@CLASSPATH@
+DEFAULT_JVM_OPTS=@DEFAULT_JVM_OPTS@
+
+# Class-data sharing (docs/performance.md): skipped when missing, ignored by the JVM when stale.
+if [ -f "$APP_HOME/lib/raytracer.jsa" ] && [ -z "$RAYTRACER_NO_CDS" ]; then
+    DEFAULT_JVM_OPTS="$DEFAULT_JVM_OPTS \"-XX:SharedArchiveFile=$APP_HOME/lib/raytracer.jsa\" \"-Xlog:cds*=off\""
+fi
+
+eval "set -- $DEFAULT_JVM_OPTS $JAVA_OPTS $RAYTRACER_OPTS -classpath \"\$CLASSPATH\" @MAIN@ \"\$@\""
+exec "$JAVACMD" "$@"
