@@ -171,7 +171,9 @@ public final class Bvh implements Accelerator {
         // near/far plane offsets in a 6-float box, from the direction's signs
         int nx = ix < 0 ? 3 : 0, ny = iy < 0 ? 4 : 1, nz = iz < 0 ? 5 : 2;
         int fx = 3 - nx, fy = 5 - ny, fz = 7 - nz;
-        if (!(slabs(rootBox, 0, nx, ny, nz, fx, fy, fz, ox, oy, oz, ix, iy, iz, tMin, best) <= Double.MAX_VALUE)) {
+        // the root's own box only when the root is a leaf: an inner root's children are tested anyway,
+        // and most rays (all shadow rays) are inside the scene's box
+        if (root < 0 && !(slabs(rootBox, 0, nx, ny, nz, fx, fy, fz, ox, oy, oz, ix, iy, iz, tMin, best) <= Double.MAX_VALUE)) {
             return hit != -1;
         }
         double[] k = ctx.rayKernel;
@@ -413,7 +415,7 @@ public final class Bvh implements Accelerator {
         double aa = dx * dx + dy * dy + dz * dz;   // |d|^2, for the spheres' clear-miss test
         int nx = ix < 0 ? 3 : 0, ny = iy < 0 ? 4 : 1, nz = iz < 0 ? 5 : 2;
         int fx = 3 - nx, fy = 5 - ny, fz = 7 - nz;
-        if (!(slabs(rootBox, 0, nx, ny, nz, fx, fy, fz, ox, oy, oz, ix, iy, iz, tMin, tMax) <= Double.MAX_VALUE)) {
+        if (root < 0 && !(slabs(rootBox, 0, nx, ny, nz, fx, fy, fz, ox, oy, oz, ix, iy, iz, tMin, tMax) <= Double.MAX_VALUE)) {
             return false;
         }
         double[] k = ctx.rayKernel;
