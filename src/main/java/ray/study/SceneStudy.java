@@ -42,7 +42,7 @@ final class SceneStudy {
         tick.rendered(pixels);
         StudyRenderer.Result probe = renderer.render(scene, warm);
         tick.rendered(pixels);
-        boolean mirrors = probe.rays().mirror > 0;
+        boolean mirrors = probe.rays().get(ray.RayKind.MIRROR) + probe.rays().get(ray.RayKind.REFRACTION) > 0;
 
         Image half = renderer.render(scene, new Setting(refSampler, "reference/2", refNs / 2, 0, scene.maxDepth)).image();
         tick.rendered(pixels * (refNs / 2) * (refNs / 2));
