@@ -82,8 +82,7 @@ final class SampledRender {
         double dx = sampler.get(x, y, index, 0), dy = sampler.get(x, y, index, 1);
         Ray ray = ctx.ray(0);
         scene.camera.setRayThrough(ray, x + dx, y + dy, scene.width, scene.height);
-        ctx.stats.camera++;
-        scene.traceInto(ray, ctx, c);
+        scene.traceCamera(ray, ctx, c);
         if (!(Double.isFinite(c.x) && Double.isFinite(c.y) && Double.isFinite(c.z))) {
             ctx.stats.invalidSamples++;
             c.set(0, 0, 0);

@@ -96,7 +96,7 @@ class SampledRenderTest {
         for (int ns : new int[] {1, 3}) {
             Renderer r = new Renderer(scene()).threads(2).settings(new RenderSettings().sampler(sampler).samples(ns));
             r.render();
-            assertEquals(40L * 28 * ns * ns, r.stats().camera, sampler + " n_s=" + ns);
+            assertEquals(40L * 28 * ns * ns, r.stats().get(ray.RayKind.CAMERA), sampler + " n_s=" + ns);
             assertEquals(ns * ns, r.summary().meanSamplesPerPixel, 0.0);
             if (r.summary().film != null) {
                 for (int y = 0; y < 28; y++) {
@@ -133,7 +133,7 @@ class SampledRenderTest {
         Image adaptive = r.render();
         assertArrayEquals(grid.rgb, adaptive.rgb);
         assertEquals(16, r.summary().meanSamplesPerPixel, 0.0);
-        assertEquals(40L * 28 * 16, r.stats().camera);
+        assertEquals(40L * 28 * 16, r.stats().get(ray.RayKind.CAMERA));
     }
 
     @Test
@@ -167,8 +167,8 @@ class SampledRenderTest {
         deep.render();
         Renderer flat = new Renderer(s).settings(new RenderSettings().sampler("jittered").samples(1).maxDepth(0));
         flat.render();
-        assertTrue(deep.stats().mirror > 0);
-        assertEquals(0, flat.stats().mirror);
+        assertTrue(deep.stats().get(ray.RayKind.MIRROR) > 0);
+        assertEquals(0, flat.stats().get(ray.RayKind.MIRROR));
         assertEquals(3, s.maxDepth, "the scene's own MaxDepth is restored");
     }
 }
