@@ -8,6 +8,8 @@ public final class RayStats {
     public long camera;
     public long shadow;
     public long mirror;
+    /** Rays refracted into or out of a dielectric. */
+    public long refraction;
     /** Samples whose value was NaN or infinite and were replaced by black (should stay 0). */
     public long invalidSamples;
 
@@ -15,16 +17,18 @@ public final class RayStats {
         camera += o.camera;
         shadow += o.shadow;
         mirror += o.mirror;
+        refraction += o.refraction;
         invalidSamples += o.invalidSamples;
     }
 
     public long total() {
-        return camera + shadow + mirror;
+        return camera + shadow + mirror + refraction;
     }
 
     @Override
     public String toString() {
-        return grouped(camera) + " camera, " + grouped(shadow) + " shadow, " + grouped(mirror) + " mirror rays";
+        return grouped(camera) + " camera, " + grouped(shadow) + " shadow, " + grouped(mirror) + " mirror"
+                + (refraction > 0 ? ", " + grouped(refraction) + " refraction" : "") + " rays";
     }
 
     /** {@code n} with commas between groups of three digits, as {@code %,d} in an English locale. */
