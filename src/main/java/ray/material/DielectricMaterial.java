@@ -62,15 +62,10 @@ public class DielectricMaterial extends Material {
 
     @Override
     public void shade(Ray ray, IntersectionRecord rec, Scene scene, TraceContext ctx, Vector3d out) {
-        out.set(0, 0, 0);
-        // as in GlazedMaterial: the depth of the rays this material traces, minus one
-        int depth = Math.max(ray.depth, ctx.level - 1);
-        if (depth >= scene.maxDepth) {
-            return;
-        }
         Vector3d d = ray.direction, n = rec.normal;
         double len = Math.sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
         if (!(len > 0) || len == Double.POSITIVE_INFINITY) {
+            out.set(0, 0, 0);
             return;
         }
         double dx = d.x / len, dy = d.y / len, dz = d.z / len;
@@ -88,31 +83,26 @@ public class DielectricMaterial extends Material {
         } else {
             r = Fresnel.schlick(refractiveIndex, entering ? cosI : cosT);
         }
-        Ray child = ctx.ray(depth + 1);
-        Vector3d c = ctx.color(depth + 1);
+        // each ray is cast one bounce deeper; past MaxDepth the casting methods cast nothing (null: black)
         double red = 0, green = 0, blue = 0;
         if (r > 0) {
-            // mirror direction d - 2 (d.n) n, d.n = -cosI
-            double k = 2 * cosI;
-            rec.spawnRay(dx + k * n.x, dy + k * n.y, dz + k * n.z, child);
-            child.depth = depth + 1;
-            ctx.stats.mirror++;
-            scene.traceInto(child, ctx, c);
-            red = r * c.x;
-            green = r * c.y;
-            blue = r * c.z;
+            Vector3d c = scene.traceMirror(ray, rec, ctx);
+            if (c != null) {
+                red = r * c.x;
+                green = r * c.y;
+                blue = r * c.z;
+            }
         }
         if (r < 1) {
-            // Snell: t = eta d + (eta cosI - cosT) n, on the far side of the surface
+            // Snell: t = eta d + (eta cosI - cosT) n, leaving on the far side of the surface
             double k = eta * cosI - cosT;
-            rec.spawnRay(eta * dx + k * n.x, eta * dy + k * n.y, eta * dz + k * n.z, child);
-            child.depth = depth + 1;
-            ctx.stats.refraction++;
-            scene.traceInto(child, ctx, c);
-            double t = 1 - r;
-            red += t * c.x;
-            green += t * c.y;
-            blue += t * c.z;
+            Vector3d c = scene.traceRefraction(ray, rec, eta * dx + k * n.x, eta * dy + k * n.y, eta * dz + k * n.z, ctx);
+            if (c != null) {
+                double t = 1 - r;
+                red += t * c.x;
+                green += t * c.y;
+                blue += t * c.z;
+            }
         }
         if (!entering && absorbs) {
             // Beer's law over the distance just travelled inside

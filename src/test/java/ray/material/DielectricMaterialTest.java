@@ -7,6 +7,7 @@ import java.util.ArrayList;
 import javax.vecmath.Vector3d;
 import org.junit.jupiter.api.Test;
 import ray.Ray;
+import ray.RayKind;
 import ray.Scene;
 import ray.TraceContext;
 import ray.parse.Parser;
@@ -168,8 +169,8 @@ class DielectricMaterialTest {
         double a = Math.toRadians(degrees);
         Ray r = new Ray(new Vector3d(Math.sin(a), 0, 0), new Vector3d(0, 0, 1));
         r.depth = depth;
-        s.traceInto(r, ctx, new Vector3d());
-        return ctx.stats.mirror + " " + ctx.stats.refraction;
+        s.traceCamera(r, ctx, new Vector3d());
+        return ctx.stats.get(RayKind.MIRROR) + " " + ctx.stats.get(RayKind.REFRACTION);
     }
 
     /** A refracted ray's direction obeys Snell's law and stays in the plane of incidence. */
@@ -181,7 +182,7 @@ class DielectricMaterialTest {
         Ray r = new Ray(new Vector3d(-Math.sin(a) * 3, 1 + Math.cos(a) * 3, 0), new Vector3d(Math.sin(a), -Math.cos(a), 0));
         TraceContext ctx = new TraceContext(s.maxDepth);
         Vector3d out = new Vector3d();
-        s.traceInto(r, ctx, out);
+        s.traceCamera(r, ctx, out);
         Ray refracted = ctx.ray(1);   // the last ray cast at depth 1 is the refracted one
         Vector3d t = new Vector3d(refracted.direction);
         t.normalize();
