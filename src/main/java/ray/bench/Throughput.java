@@ -203,7 +203,8 @@ public final class Throughput {
         TraceContext ctx = new TraceContext(scene.maxDepth);
         pass(scene.accelerator(), ctx, new Ray(), new IntersectionRecord(), rays, kind.closest);
         double n = Math.max(1, rays.length / STRIDE);
-        return new double[] {ctx.nodeVisits / n, ctx.primitiveTests / n};
+        ray.accel.Bvh bvh = (ray.accel.Bvh) scene.accelerator();
+        return new double[] {bvh.nodeVisits(ctx) / n, bvh.primitiveTests(ctx) / n};
     }
 
     private Rate run(Kind kind, boolean closest, int warmups, int passes) {
