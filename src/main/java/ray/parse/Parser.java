@@ -265,6 +265,7 @@ public final class Parser {
         if (name != null) {
             named.put(name, o);
             namedLines.put(name, line);
+            scene.name(o, name);
         }
     }
 
