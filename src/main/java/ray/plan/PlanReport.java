@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import javax.vecmath.Vector3d;
+import ray.RayKind;
 import ray.Scene;
 import ray.light.Light;
 import ray.material.Material;
@@ -15,13 +16,13 @@ import ray.material.Material;
  */
 public final class PlanReport {
 
-    /** One effect: its name, whether it is on, why, and the kind of ray it casts (-1: none). */
+    /** One effect: its name, whether it is on, why, and the kind of ray it casts (null: none). */
     public static final class Effect {
         public final String name, why;
         public final boolean on;
-        public final int kind;
+        public final RayKind kind;
 
-        Effect(String name, boolean on, String why, int kind) {
+        Effect(String name, boolean on, String why, RayKind kind) {
             this.name = name;
             this.on = on;
             this.why = why;
@@ -42,24 +43,24 @@ public final class PlanReport {
         Map<Material, Shading> used = plan.used;
         int ns = Math.max(1, s.samplesPerPixel);
         effects.add(new Effect("camera rays", true, s.width + " x " + s.height + " pixels x " + ns + "x" + ns
-                + " samples (regular grid)", RayBound.CAMERA));
+                + " samples (regular grid)", RayKind.CAMERA));
         List<Material> ambient = select(used, true, "ambient"), direct = select(used, true, "direct"),
                 highlight = select(used, true, "highlight"), mirror = select(used, true, "mirror"),
                 refraction = select(used, true, "refraction"), unknown = select(used, true, "unknown");
         effects.add(new Effect("ambient", !ambient.isEmpty(), !ambient.isEmpty() ? "k_a I_a at " + names(ambient)
-                + " (computed once per material)" : zero(s.ambientLight) ? "I_a = 0" : "no material has k_a", -1));
+                + " (computed once per material)" : zero(s.ambientLight) ? "I_a = 0" : "no material has k_a", null));
         boolean lit = plan.lights().length > 0 && !direct.isEmpty();
         effects.add(new Effect("direct light", lit, lit ? "at " + names(direct) + ", from " + plan.lights().length + " light"
                 + (plan.lights().length == 1 ? "" : "s") : s.lights.isEmpty() ? "no lights" : plan.lights().length == 0
-                ? "every light is dark" : "no material has a direct term", RayBound.SHADOW));
+                ? "every light is dark" : "no material has a direct term", RayKind.SHADOW));
         effects.add(new Effect("highlights", lit && !highlight.isEmpty(), !highlight.isEmpty() ? "k_s at " + names(highlight)
-                : "no material has k_s", -1));
+                : "no material has k_s", null));
         boolean reflects = !mirror.isEmpty() && s.maxDepth > 0;
         effects.add(new Effect("mirror reflection", reflects, reflects ? "at " + names(mirror) + ", MaxDepth " + s.maxDepth
-                : mirror.isEmpty() ? "no material reflects" : "MaxDepth 0", RayBound.MIRROR));
+                : mirror.isEmpty() ? "no material reflects" : "MaxDepth 0", RayKind.MIRROR));
         boolean refracts = !refraction.isEmpty() && s.maxDepth > 0;
         effects.add(new Effect("refraction", refracts, refracts ? "at " + names(refraction) + ", MaxDepth " + s.maxDepth
-                : refraction.isEmpty() ? "no material refracts" : "MaxDepth 0", RayBound.REFRACTION));
+                : refraction.isEmpty() ? "no material refracts" : "MaxDepth 0", RayKind.REFRACTION));
         List<String> sampled = new ArrayList<>();
         for (Light l : plan.lights()) {
             if (!plan.unknownLights.contains(l) && l.shadowRaysPerPoint() > 1) {
@@ -67,7 +68,7 @@ public final class PlanReport {
             }
         }
         effects.add(new Effect("area-light samples", lit && !sampled.isEmpty(), sampled.isEmpty() ? "no sampled light"
-                : "per lit point: " + String.join(", ", sampled), -1));
+                : "per lit point: " + String.join(", ", sampled), null));
         boolean user = !unknown.isEmpty() || lit && !plan.unknownLights.isEmpty();
         List<String> who = new ArrayList<>();
         for (Material m : unknown) {
@@ -77,7 +78,7 @@ public final class PlanReport {
             who.add(label(l));
         }
         effects.add(new Effect("user rays", user, user ? "user classes the plan cannot see into: " + String.join(", ", who)
-                + " (assumed to need everything)" : "no user class", RayBound.USER));
+                + " (assumed to need everything)" : "no user class", RayKind.USER));
         for (int i = 0; i < s.lights.size(); i++) {
             Light l = s.lights.get(i);
             lightLines.add(label(l) + ": " + (plan.dark.contains(l) ? "zero intensity, skipped"
@@ -186,7 +187,7 @@ public final class PlanReport {
         Scene s = plan.scene();
         out.add("plan for " + sceneName + " (" + s.width + "x" + s.height + ", MaxDepth " + s.maxDepth + ")");
         for (Effect e : effects) {
-            String cost = e.kind < 0 ? "" : "   <= " + count(plan.bound().get(e.kind)) + " " + RayBound.KINDS[e.kind] + " rays";
+            String cost = e.kind == null ? "" : "   <= " + count(plan.bound().get(e.kind)) + " " + e.kind.key() + " rays";
             out.add(String.format(java.util.Locale.ROOT, "  %-19s %-4s %s%s", e.name, e.on ? "on" : "off", e.why, e.on ? cost : ""));
         }
         for (String l : lightLines) {
@@ -202,8 +203,8 @@ public final class PlanReport {
 
     private static String bounds(RayBound b) {
         StringBuilder t = new StringBuilder(count(b.total()) + " rays (");
-        for (int k = 0; k < RayBound.KINDS.length; k++) {
-            t.append(k == 0 ? "" : ", ").append(RayBound.KINDS[k]).append(' ').append(count(b.get(k)));
+        for (RayKind k : RayKind.values()) {
+            t.append(k.ordinal() == 0 ? "" : ", ").append(k.key()).append(' ').append(count(b.get(k)));
         }
         return t.append(')').toString();
     }
@@ -234,8 +235,8 @@ public final class PlanReport {
     }
 
     private static JsonLine bound(JsonLine j, RayBound b) {
-        for (int k = 0; k < RayBound.KINDS.length; k++) {
-            j.put(RayBound.KINDS[k], b.get(k));
+        for (RayKind k : RayKind.values()) {
+            j.put(k.key(), b.get(k));
         }
         return j;
     }

@@ -1,5 +1,6 @@
 package ray.plan;
 
+import ray.RayKind;
 import ray.Scene;
 
 /**
@@ -14,11 +15,10 @@ import ray.Scene;
  */
 public final class RayBound {
 
-    /** The kinds, in the order of the JSON's {@code "rays"} object. */
-    public static final String[] KINDS = {"camera", "shadow", "mirror", "refraction", "user"};
-    public static final int CAMERA = 0, SHADOW = 1, MIRROR = 2, REFRACTION = 3, USER = 4;
+    private static final int CAMERA = RayKind.CAMERA.ordinal(), SHADOW = RayKind.SHADOW.ordinal(),
+            MIRROR = RayKind.MIRROR.ordinal(), REFRACTION = RayKind.REFRACTION.ordinal(), USER = RayKind.USER.ordinal();
 
-    private final double[] rays = new double[KINDS.length];
+    private final double[] rays = new double[RayKind.values().length];
 
     private RayBound() {
     }
@@ -70,9 +70,9 @@ public final class RayBound {
         return sum;
     }
 
-    /** The bound for kind {@code k} ({@link #CAMERA} ...), infinite where unknown. */
-    public double get(int k) {
-        return rays[k];
+    /** The bound for rays of kind {@code k}, infinite where unknown. */
+    public double get(RayKind k) {
+        return rays[k.ordinal()];
     }
 
     /** All kinds together (infinite where any is unknown). */
