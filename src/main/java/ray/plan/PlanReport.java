@@ -173,6 +173,11 @@ public final class PlanReport {
         return v.x == 0 && v.y == 0 && v.z == 0;
     }
 
+    /** The plan with the exact skips. */
+    public RenderPlan plan() {
+        return plan;
+    }
+
     public List<Effect> effects() {
         return effects;
     }

@@ -19,6 +19,9 @@ public final class RayBound {
             MIRROR = RayKind.MIRROR.ordinal(), REFRACTION = RayKind.REFRACTION.ordinal(), USER = RayKind.USER.ordinal();
 
     private final double[] rays = new double[RayKind.values().length];
+    /** What the bound was computed from: camera rays, most secondary rays per hit, shadow rays per lit point, MaxDepth. */
+    double cameraRays, perPoint;
+    int branch, depth;
 
     private RayBound() {
     }
@@ -43,6 +46,10 @@ public final class RayBound {
             perPoint += plan.unknownLights.contains(l) ? Double.POSITIVE_INFINITY : l.shadowRaysPerPoint();
         }
         int depth = Math.max(0, scene.maxDepth);
+        b.cameraRays = n;
+        b.perPoint = perPoint;
+        b.branch = branch;
+        b.depth = depth;
         double hits = n * geometric(branch, depth), parents = n * geometric(branch, depth - 1);
         if (unknown) {   // a user's material: any number of rays of its own, each shading anything
             hits = parents = Double.POSITIVE_INFINITY;
@@ -52,6 +59,31 @@ public final class RayBound {
         b.rays[SHADOW] = direct && perPoint > 0 ? hits * perPoint : 0;
         b.rays[USER] = unknown || direct && !plan.unknownLights.isEmpty() ? Double.POSITIVE_INFINITY : 0;
         return b;
+    }
+
+    /** The kind with the largest bound. */
+    public RayKind largest() {
+        RayKind big = RayKind.CAMERA;
+        for (RayKind k : RayKind.values()) {
+            if (get(k) > get(big)) {
+                big = k;
+            }
+        }
+        return big;
+    }
+
+    /** What makes the bound large, in words: the factors it multiplies. */
+    public String factors(Scene scene) {
+        int ns = Math.max(1, scene.samplesPerPixel);
+        String s = scene.width + "x" + scene.height + " pixels x " + ns + "x" + ns + " samples";
+        if (branch > 0 && depth > 0) {
+            s += ", " + (branch == 1 ? "a chain of " + depth + " bounces (MaxDepth)"
+                    : branch + " secondary rays per hit to MaxDepth " + depth + " (" + branch + "^" + depth + " paths)");
+        }
+        if (perPoint > 0 && get(RayKind.SHADOW) > 0) {
+            s += ", " + (Double.isFinite(perPoint) ? PlanReport.count(perPoint) : "unknown") + " shadow rays per lit point";
+        }
+        return s;
     }
 
     /** 1 + b + ... + b^k (0 for k &lt; 0). */
