@@ -74,7 +74,7 @@ public final class CostGate {
             return "unknown: a user class may trace any number of rays";
         }
         double s = rays / (RAYS_PER_THREAD_SECOND * Math.max(1, threads));
-        String t = s < 90 ? Math.round(s) + " s" : s < 5400 ? Math.round(s / 60) + " min" : s < 3 * 86400 ? Math.round(s / 3600) + " h"
+        String t = s < 1 ? "a second" : s < 90 ? Math.round(s) + " s" : s < 5400 ? Math.round(s / 60) + " min" : s < 3 * 86400 ? Math.round(s / 3600) + " h"
                 : Math.round(s / 86400) + " days";
         return "up to about " + t + " on " + threads + " thread" + (threads == 1 ? "" : "s");
     }

@@ -46,6 +46,33 @@ class TrustTest {
         assertEquals(EnumSet.allOf(Term.class), RenderPlan.termsOf(new OwnDiffuse()));
     }
 
+    /** Every concrete built-in material and light declares itself where it shades (else the plan calls it unknown). */
+    @Test
+    void everyBuiltInMaterialAndLightIsTrusted() throws Exception {
+        int seen = 0;
+        for (Class<?> base : new Class<?>[] {ray.material.Material.class, ray.light.Light.class}) {
+            java.nio.file.Path dir = java.nio.file.Path.of(base.getProtectionDomain().getCodeSource().getLocation().toURI())
+                    .resolve(base.getPackageName().replace('.', '/'));
+            try (java.util.stream.Stream<java.nio.file.Path> files = java.nio.file.Files.list(dir)) {
+                for (java.nio.file.Path f : (Iterable<java.nio.file.Path>) files::iterator) {
+                    String name = f.getFileName().toString();
+                    if (!name.endsWith(".class") || name.contains("$")) {
+                        continue;
+                    }
+                    Class<?> c = Class.forName(base.getPackageName() + "." + name.replace(".class", ""));
+                    if (!base.isAssignableFrom(c) || java.lang.reflect.Modifier.isAbstract(c.getModifiers())) {
+                        continue;
+                    }
+                    Object o = c.getConstructor().newInstance();
+                    assertTrue(o instanceof ray.material.Material m ? Trust.material(m) : Trust.light((ray.light.Light) o),
+                            c.getSimpleName() + " must declare terms() (isDark/shadowRaysPerPoint) where it shades (samples)");
+                    seen++;
+                }
+            }
+        }
+        assertTrue(seen >= 6, seen + " classes");
+    }
+
     @Test
     void aDarkUserLightIsNotSkippedAndAUserMaterialMakesTheBoundUnknown() throws Exception {
         String text = "Width 4\nHeight 4\n\nCamera Camera\n\nMaterial Metal m\n\n"
