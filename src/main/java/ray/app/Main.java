@@ -41,6 +41,9 @@ public final class Main implements Callable<Integer> {
     @Option(names = {"-j", "--threads"}, paramLabel = "N", description = "render threads (default: all cores, ${DEFAULT-VALUE})")
     int threads = Runtime.getRuntime().availableProcessors();
 
+    @CommandLine.Mixin
+    SamplingOptions sampling = new SamplingOptions();
+
     @Option(names = {"-q", "--quiet"}, description = "print nothing but errors")
     boolean quiet;
 
@@ -196,6 +199,10 @@ public final class Main implements Callable<Integer> {
             err.println("raytracer: --threads must be at least 1");
             return 2;
         }
+        if (sampling.problem() != null) {
+            err.println("raytracer: " + sampling.problem());
+            return 2;
+        }
         if (bench) {
             if (!scenes.isEmpty() || output != null || runs < 1) {
                 err.println("raytracer: --bench takes no scene files and no --output, and --runs must be at least 1");
@@ -278,6 +285,7 @@ public final class Main implements Callable<Integer> {
         for (String w : warnings) {
             err.println(w);
         }
+        sampling.applyTo(scene);
         if (!ray.plan.CostGate.check(scenePath.toString(), scene, allowLong, threads, quiet, err)) {
             return false;
         }
@@ -315,6 +323,7 @@ public final class Main implements Callable<Integer> {
         if (!quiet) {
             out.println(scenePath + " -> " + png + " (" + scene.width + "x" + scene.height + ", " + scene.samplesPerPixel
                     + "x" + scene.samplesPerPixel + " AA, " + fixed(t3 - t0, 2) + " s)");
+            SamplingOptions.report(out, renderer.summary());
         }
         if (stats && json) {
             out.println(StatsJson.line(scenePath, png, scene, renderer.stats(), new long[] {t0, t1, t2, t3}));

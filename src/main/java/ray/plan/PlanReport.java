@@ -42,8 +42,9 @@ public final class PlanReport {
         Scene s = plan.scene();
         Map<Material, Shading> used = plan.used;
         int ns = Math.max(1, s.samplesPerPixel);
-        effects.add(new Effect("camera rays", true, s.width + " x " + s.height + " pixels x " + ns + "x" + ns
-                + " samples (regular grid)", RayKind.CAMERA));
+        boolean adaptive = "adaptive".equals(s.sampler);
+        effects.add(new Effect("camera rays", true, s.width + " x " + s.height + " pixels x " + (adaptive ? "at most " : "") + ns + "x" + ns
+                + " samples (" + s.sampler + " sampler)", RayKind.CAMERA));
         List<Material> ambient = select(used, true, "ambient"), direct = select(used, true, "direct"),
                 highlight = select(used, true, "highlight"), mirror = select(used, true, "mirror"),
                 refraction = select(used, true, "refraction"), unknown = select(used, true, "unknown");
