@@ -34,7 +34,7 @@ public final class ObjFile {
 
     /** Vertex positions, 3 floats each. */
     public final float[] positions;
-    /** Vertex normals from {@code vn}, 3 floats each (may be empty). */
+    /** Vertex normals from {@code vn}, 3 floats each, as written (not normalised; never zero). */
     public final float[] normals;
     /** Triangles: 3 vertex indices (0-based) each, faces fanned, in file order. */
     public final int[] triangles;
@@ -188,6 +188,9 @@ public final class ObjFile {
             float x = n.getX(), y = n.getY(), z = n.getZ();
             if (!Float.isFinite(x) || !Float.isFinite(y) || !Float.isFinite(z)) {
                 throw bad("has a coordinate that is not a finite float (expected 'vn x y z')");
+            }
+            if (x == 0 && y == 0 && z == 0) {
+                throw bad("has length 0 (expected 'vn x y z', a direction)");
             }
             if (3 * normalCount + 3 > nrm.length) {
                 nrm = Arrays.copyOf(nrm, Math.max(3 * 1024, 2 * nrm.length));

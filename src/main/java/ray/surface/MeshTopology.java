@@ -33,8 +33,8 @@ final class MeshTopology {
             long e = edges[i];
             int a = (int) (e >>> 32), b = (int) e;
             if (i + 1 < m && edges[i + 1] == e) {
-                return "the edge from vertex " + (a + 1) + " to vertex " + (b + 1) + " is run along the same way by two faces:"
-                        + " faces wound inconsistently, or more than two faces meet there";
+                return "the edge from vertex " + (a + 1) + " to vertex " + (b + 1) + " is run along the same way by two faces"
+                        + " (faces wound inconsistently, or more than two faces meet there)";
             }
             if (Arrays.binarySearch(edges, (long) b << 32 | a) < 0) {
                 return "the edge between vertices " + (a + 1) + " and " + (b + 1) + " belongs to one face only (a hole in the surface)";

@@ -71,6 +71,7 @@ class ObjFileTest {
         assertEquals("m.obj:1: 'v 1e39 0 0' has a coordinate that is not a finite float (expected 'v x y z', each within +-3.4e38)",
                 error("v 1e39 0 0\n"));
         assertEquals("m.obj:2: 'vn 0 1' has 2 coordinates (expected 'vn x y z')", error("v 0 0 0\nvn 0 1\n"));
+        assertEquals("m.obj:1: 'vn 0 0 -0' has length 0 (expected 'vn x y z', a direction)", error("vn 0 0 -0\n"));
         assertEquals("m.obj:4: 'f 1 2' has 2 corners (expected a face of at least three: 'f v1 v2 v3 ...')", error(tri + "f 1 2\n"));
         assertEquals("m.obj:4: cannot read 'f 1 x 3' (expected 'f' and at least three corners, each v, v/vt, v//vn or v/vt/vn "
                 + "with non-zero whole-number indices)", error(tri + "f 1 x 3\n"));

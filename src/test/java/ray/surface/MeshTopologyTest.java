@@ -35,8 +35,8 @@ class MeshTopologyTest {
         int[] f = CUBE_FACES.clone();
         f[1] = 1;       // first triangle 0 1 2 instead of 0 2 1
         f[2] = 2;
-        assertEquals("the edge from vertex 1 to vertex 2 is run along the same way by two faces: faces wound inconsistently,"
-                + " or more than two faces meet there", MeshTopology.openEdge(CUBE, f));
+        assertEquals("the edge from vertex 1 to vertex 2 is run along the same way by two faces (faces wound inconsistently,"
+                + " or more than two faces meet there)", MeshTopology.openEdge(CUBE, f));
     }
 
     @Test
