@@ -19,6 +19,8 @@ public final class TraceContext {
     public final Ray shadowRay = new Ray();
     public final LightSample lightSample = new LightSample();
     public final RayStats stats = new RayStats();
+    /** The pixel sample being traced: light and effect code draws its sampler dimensions here (no allocation). */
+    public final ray.render.PixelSample sample = new ray.render.PixelSample();
     /**
      * The scene accelerator's own per-thread scratch (for the BVH its {@code RayQuery}: traversal stack,
      * per-ray set-up); made and used by the accelerator only.
