@@ -328,7 +328,7 @@ public final class Main implements Callable<Integer> {
         }
         long t3 = System.nanoTime();
         // plain concatenation, not printf: java.util.Formatter's first use loads locale data (~20 ms)
-        if (!quiet) {
+        if (!quiet && !json) {   // with --json, stdout holds JSON Lines only
             out.println(scenePath + " -> " + png + " (" + scene.width + "x" + scene.height + ", " + scene.samplesPerPixel
                     + "x" + scene.samplesPerPixel + " AA, " + fixed(t3 - t0, 2) + " s)");
             SamplingOptions.report(out, renderer.summary());

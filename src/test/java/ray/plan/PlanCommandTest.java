@@ -69,7 +69,7 @@ class PlanCommandTest {
         }
         assertEquals(0, run(Stream.concat(Stream.of("--plan", "--json"), scenes.stream()).toArray(String[]::new)), err());
         String[] plans = out().split("\n");
-        assertEquals(0, run(Stream.concat(Stream.of("-q", "--stats", "--json"), scenes.stream()).toArray(String[]::new)), err());
+        assertEquals(0, run(Stream.concat(Stream.of("--stats", "--json"), scenes.stream()).toArray(String[]::new)), err());
         String[] stats = out().split("\n");
         assertEquals(scenes.size(), plans.length);
         assertEquals(scenes.size(), stats.length);
