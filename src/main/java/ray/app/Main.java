@@ -41,6 +41,9 @@ public final class Main implements Callable<Integer> {
     @Option(names = {"-j", "--threads"}, paramLabel = "N", description = "render threads (default: all cores, ${DEFAULT-VALUE})")
     int threads = Runtime.getRuntime().availableProcessors();
 
+    @CommandLine.Mixin
+    SamplingOptions sampling = new SamplingOptions();
+
     @Option(names = {"-q", "--quiet"}, description = "print nothing but errors")
     boolean quiet;
 
@@ -71,6 +74,16 @@ public final class Main implements Callable<Integer> {
 
     @Option(names = "--bench-work", paramLabel = "DIR", description = "with --bench: where images, logs and generated scenes go (default: a raytracer-bench directory in the temporary directory)")
     Path benchWork;
+
+    @Option(names = "--study", description = "accuracy study: render each scene with every sampler and setting, time it and "
+            + "measure its error against a converged reference; report in --report-dir (default build/reports/accuracy)")
+    boolean study;
+
+    @Option(names = "--quick", description = "with --study: a smaller grid of settings (n_s up to 4)")
+    boolean quick;
+
+    @Option(names = "--report-dir", paramLabel = "DIR", description = "with --study: where the CSVs, plots and index.html go")
+    Path reportDir;
 
     private PrintStream out = System.out;
     private PrintStream err = System.err;
@@ -177,6 +190,10 @@ public final class Main implements Callable<Integer> {
             err.println("raytracer: --threads must be at least 1");
             return 2;
         }
+        if (sampling.problem() != null) {
+            err.println("raytracer: " + sampling.problem());
+            return 2;
+        }
         if (bench) {
             if (!scenes.isEmpty() || output != null || runs < 1) {
                 err.println("raytracer: --bench takes no scene files and no --output, and --runs must be at least 1");
@@ -195,6 +212,14 @@ public final class Main implements Callable<Integer> {
                 Thread.currentThread().interrupt();
                 return 1;
             }
+        }
+        if (study) {
+            if (scenes.isEmpty() || output != null) {
+                err.println("raytracer: --study takes scene files and no --output (see --help)");
+                return 2;
+            }
+            return ray.study.Study.run(scenes, quick, reportDir != null ? reportDir : Path.of("build", "reports", "accuracy"),
+                    threads, out, err, !this.quiet && System.console() != null);
         }
         if (output != null && scenes.size() != 1) {
             err.println("raytracer: --output needs exactly one scene file");
@@ -244,6 +269,7 @@ public final class Main implements Callable<Integer> {
         for (String w : warnings) {
             err.println(w);
         }
+        sampling.applyTo(scene);
         long t1 = System.nanoTime();
         Renderer renderer = new Renderer(scene).threads(threads);
         ProgressLine progress = !quiet && err == System.err && System.console() != null
@@ -278,6 +304,7 @@ public final class Main implements Callable<Integer> {
         if (!quiet) {
             out.println(scenePath + " -> " + png + " (" + scene.width + "x" + scene.height + ", " + scene.samplesPerPixel
                     + "x" + scene.samplesPerPixel + " AA, " + fixed(t3 - t0, 2) + " s)");
+            SamplingOptions.report(out, renderer.summary());
         }
         if (stats) {
             long build = scene.accelerator() instanceof Bvh b ? b.buildNanos() : 0;
