@@ -1,6 +1,10 @@
 package ray;
 
 import java.util.ArrayList;
+import java.util.EnumSet;
+import java.util.IdentityHashMap;
+import java.util.Map;
+import java.util.Set;
 import java.util.List;
 import javax.vecmath.Vector3d;
 import ray.accel.Accelerator;
@@ -8,6 +12,8 @@ import ray.accel.Bvh;
 import ray.light.Light;
 import ray.light.LightSample;
 import ray.material.Material;
+import ray.plan.RenderPlan;
+import ray.plan.Skip;
 import ray.render.Image;
 import ray.render.Renderer;
 import ray.surface.Surface;
@@ -41,6 +47,13 @@ public class Scene {
     public List<Material> materials = new ArrayList<>();
 
     private volatile Accelerator accel;
+    private volatile RenderPlan plan;
+    private Set<Skip> skips = EnumSet.allOf(Skip.class);
+    private boolean cutFaint;
+    /** A plan derived by {@link #derivePlan()} for the next {@link #prepare()} to use. */
+    private RenderPlan pendingPlan;
+    /** The names objects were given in the scene file ({@code Material Diffuse red}), for messages and the plan. */
+    private final Map<Object, String> names = new IdentityHashMap<>();
 
     /**
      * Validates the objects, fixes the camera frame and builds the acceleration structure. Called by
@@ -54,7 +67,61 @@ public class Scene {
             camera.aspect = (double) width / height;
         }
         camera.init();
+        RenderPlan p = pendingPlan != null ? pendingPlan : RenderPlan.derive(this, skips, cutFaint);
+        pendingPlan = null;
+        p.apply();
+        plan = p;
         accel = Bvh.build(surfaces, this);
+    }
+
+    /** The render plan of the last {@link #prepare()} (derived there, before the first ray). */
+    public RenderPlan plan() {
+        accelerator();
+        return plan;
+    }
+
+    /**
+     * Derives the render plan now, before {@link #prepare()} (the command line checks its cost before
+     * building anything); the next prepare uses this plan instead of deriving it again, so the plan is
+     * derived once per render. Change the scene after this and prepare derives afresh only if the
+     * change went through {@link #planSkips} or {@link #planCutFaint}.
+     */
+    public synchronized RenderPlan derivePlan() {
+        pendingPlan = RenderPlan.derive(this, skips, cutFaint);
+        return pendingPlan;
+    }
+
+    /**
+     * Which of the plan's exact skips the next {@link #prepare()} makes (all by default); tests and
+     * {@code --plan}'s "without the plan" line turn them off. Takes effect at the next prepare.
+     */
+    public void planSkips(Set<Skip> s) {
+        skips = s.isEmpty() ? EnumSet.noneOf(Skip.class) : EnumSet.copyOf(s);
+        pendingPlan = null;
+    }
+
+    /**
+     * Whether the next {@link #prepare()} cuts mirror paths whose remaining weight is below
+     * {@link RenderPlan#FAINT} (off by default: inexact, the {@code --cut-faint} option).
+     */
+    public void planCutFaint(boolean cut) {
+        cutFaint = cut;
+        pendingPlan = null;
+    }
+
+    /** True when the next {@link #prepare()} cuts faint mirror paths ({@link #planCutFaint}). */
+    public boolean cutsFaintPaths() {
+        return cutFaint;
+    }
+
+    /** Records the name {@code o} has in the scene file. */
+    public void name(Object o, String name) {
+        names.put(o, name);
+    }
+
+    /** The name {@code o} has in the scene file, or null. */
+    public String nameOf(Object o) {
+        return names.get(o);
     }
 
     /** The acceleration structure, built on first use. */
@@ -65,6 +132,14 @@ public class Scene {
             a = accel;
         }
         return a;
+    }
+
+    /**
+     * Replaces the acceleration structure until the next {@link #prepare()} (for tools: the benchmark
+     * wraps it to record the rays a render casts).
+     */
+    public void useAccelerator(Accelerator a) {
+        accel = a;
     }
 
     /** Renders the whole image: {@code [x][y]}, x across, y down from the top row. */

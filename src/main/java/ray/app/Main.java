@@ -12,7 +12,6 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import ray.Scene;
 import ray.accel.Bvh;
-import ray.bench.Bench;
 import ray.parse.Parser;
 import ray.parse.SceneFormatException;
 import ray.render.Image;
@@ -50,31 +49,24 @@ public final class Main implements Callable<Integer> {
     @Option(names = "--stats", description = "print parse, build, render and write times, rays by kind, peak memory and BVH size")
     boolean stats;
 
+    @Option(names = "--plan", description = "print each scene's render plan (effects, why, ray bounds, what the plan saves) without rendering")
+    boolean plan;
+
+    @Option(names = "--json", description = "with --plan or --stats: print JSON Lines on stdout instead, one object per scene (docs/json.md)")
+    boolean json;
+
+    @Option(names = "--cut-faint", description = "stop mirror paths whose remaining weight (product of k_m) is below half an 8-bit step: "
+            + "faster, not exact (named in --plan)")
+    boolean cutFaint;
+
+    @Option(names = "--allow-long", description = "render even a scene whose plan bounds it above 1e11 rays (refused otherwise)")
+    boolean allowLong;
+
     @Option(names = "--view", description = "open the viewer on the (first) scene instead of writing a PNG")
     boolean view;
 
     /** What {@link #run} returns when the viewer was opened: the JVM must keep running (no System.exit). */
     public static final int VIEWER_OPEN = -1;
-    @Option(names = "--bench", description = "render the benchmark scenes as whole processes and print the table: wall time, "
-            + "parse/build/render/write, rays by kind, peak memory (docs/performance.md)")
-    boolean bench;
-
-    @Option(names = "--runs", paramLabel = "N", description = "with --bench: timed runs per scene after one warm-up (default ${DEFAULT-VALUE})")
-    int runs = 3;
-
-    @Option(names = "--peers", description = "with --bench: also time the installed peer renderers, interleaved, and compare with Embree")
-    boolean peers;
-
-    @Option(names = "--bench-dir", paramLabel = "DIR", description = "with --bench: the benchmark directory (scenes/, gen/, peers/); "
-            + "default $RAYTRACER_BENCH_DIR or ../shared/bench")
-    Path benchDir;
-
-    @Option(names = "--bench-scenes", paramLabel = "LIST", description = "with --bench: some of classic,mirrors,spheres10k,mesh100k")
-    String benchScenes;
-
-    @Option(names = "--bench-work", paramLabel = "DIR", description = "with --bench: where images, logs and generated scenes go (default: a raytracer-bench directory in the temporary directory)")
-    Path benchWork;
-
     @Option(names = "--study", description = "accuracy study: render each scene with every sampler and setting, time it and "
             + "measure its error against a converged reference; report in --report-dir (default build/reports/accuracy)")
     boolean study;
@@ -194,24 +186,15 @@ public final class Main implements Callable<Integer> {
             err.println("raytracer: " + sampling.problem());
             return 2;
         }
-        if (bench) {
-            if (!scenes.isEmpty() || output != null || runs < 1) {
-                err.println("raytracer: --bench takes no scene files and no --output, and --runs must be at least 1");
-                return 2;
-            }
-            try {
-                Path work = benchWork != null ? benchWork : Path.of(System.getProperty("java.io.tmpdir"), "raytracer-bench");
-                return new Bench(out, err, runs, peers, Bench.findBenchDir(benchDir), work, Bench.sceneList(benchScenes)).run();
-            } catch (IllegalArgumentException e) {
-                err.println("raytracer: " + e.getMessage());
-                return 2;
-            } catch (java.io.IOException e) {
-                err.println("raytracer: bench: " + e.getMessage());
-                return 1;
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-                return 1;
-            }
+        if (json && !plan && !stats) {
+            err.println("raytracer: --json goes with --plan or --stats");
+            return 2;
+        }
+        if (plan) {
+            return ray.plan.PlanCommand.run(scenes, json, scene -> {
+                sampling.applyTo(scene);
+                scene.planCutFaint(cutFaint);
+            }, out, err);
         }
         if (study) {
             if (scenes.isEmpty() || output != null) {
@@ -270,6 +253,10 @@ public final class Main implements Callable<Integer> {
             err.println(w);
         }
         sampling.applyTo(scene);
+        scene.planCutFaint(cutFaint);
+        if (!ray.plan.CostGate.check(scenePath.toString(), scene, allowLong, threads, quiet, err)) {
+            return false;
+        }
         long t1 = System.nanoTime();
         Renderer renderer = new Renderer(scene).threads(threads);
         ProgressLine progress = !quiet && err == System.err && System.console() != null
@@ -301,12 +288,14 @@ public final class Main implements Callable<Integer> {
         }
         long t3 = System.nanoTime();
         // plain concatenation, not printf: java.util.Formatter's first use loads locale data (~20 ms)
-        if (!quiet) {
+        if (!quiet && !json) {   // with --json, stdout holds JSON Lines only
             out.println(scenePath + " -> " + png + " (" + scene.width + "x" + scene.height + ", " + scene.samplesPerPixel
                     + "x" + scene.samplesPerPixel + " AA, " + fixed(t3 - t0, 2) + " s)");
             SamplingOptions.report(out, renderer.summary());
         }
-        if (stats) {
+        if (stats && json) {
+            out.println(StatsJson.line(scenePath, png, scene, renderer.stats(), new long[] {t0, t1, t2, t3}));
+        } else if (stats) {
             long build = scene.accelerator() instanceof Bvh b ? b.buildNanos() : 0;
             String bvh = scene.accelerator() instanceof Bvh b && b.primitiveCount() > 0
                     ? "; BVH " + fixed(Math.round(1e9 * b.memoryBytes() / b.primitiveCount()), 1) + " bytes/primitive" : "";

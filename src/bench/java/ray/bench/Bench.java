@@ -1,9 +1,9 @@
 package ray.bench;
 
+import com.google.gson.JsonObject;
+import com.google.gson.JsonParser;
 import java.io.IOException;
 import java.io.PrintStream;
-import java.lang.management.ManagementFactory;
-import java.net.URISyntaxException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -16,6 +16,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import ray.RayKind;
 import ray.Scene;
 import ray.parse.Parser;
 
@@ -52,8 +53,11 @@ public final class Bench {
     private final Path benchDir;
     private final Path work;
     private final List<String> scenes;
+    /** The command that starts the installed program (its launcher). */
+    private final List<String> self;
 
-    public Bench(PrintStream out, PrintStream err, int runs, boolean withPeers, Path benchDir, Path work, List<String> scenes) {
+    public Bench(PrintStream out, PrintStream err, int runs, boolean withPeers, Path benchDir, Path work, List<String> scenes,
+                 List<String> self) {
         this.out = out;
         this.err = err;
         this.runs = runs;
@@ -61,6 +65,59 @@ public final class Bench {
         this.benchDir = benchDir;
         this.work = work;
         this.scenes = scenes;
+        this.self = self;
+    }
+
+    /**
+     * {@code gradle bench}: {@code ray.bench.Bench --launcher PATH [--runs N] [--peers] [--bench-dir DIR]
+     * [--bench-scenes LIST] [--bench-work DIR]}; the launcher is the installed {@code bin/raytracer}.
+     */
+    public static void main(String[] args) {
+        System.exit(run(System.out, System.err, args));
+    }
+
+    static int run(PrintStream out, PrintStream err, String... args) {
+        int runs = 3;
+        boolean peers = false;
+        Path benchDir = null, work = defaultWork();
+        String list = null, launcher = null;
+        try {
+            for (int i = 0; i < args.length; i++) {
+                String a = args[i];
+                if (a.equals("--peers")) {
+                    peers = true;
+                    continue;
+                }
+                if (i + 1 >= args.length) {
+                    throw new IllegalArgumentException("unknown option or missing value: " + a);
+                }
+                String v = args[++i];
+                switch (a) {
+                    case "--runs" -> runs = Integer.parseInt(v);
+                    case "--bench-dir" -> benchDir = Path.of(v);
+                    case "--bench-scenes" -> list = v;
+                    case "--bench-work" -> work = Path.of(v);
+                    case "--launcher" -> launcher = v;
+                    default -> throw new IllegalArgumentException("unknown option " + a);
+                }
+            }
+            if (runs < 1) {
+                throw new IllegalArgumentException("--runs must be at least 1");
+            }
+            if (launcher == null || !Files.isExecutable(Path.of(launcher))) {
+                throw new IllegalArgumentException("--launcher must name the installed bin/raytracer (gradle bench does)");
+            }
+            return new Bench(out, err, runs, peers, findBenchDir(benchDir), work, sceneList(list), List.of(launcher)).run();
+        } catch (IllegalArgumentException e) {
+            err.println("bench: " + e.getMessage());
+            return 2;
+        } catch (IOException e) {
+            err.println("bench: " + e.getMessage());
+            return 1;
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return 1;
+        }
     }
 
     /** The bench directory to use: the option, $RAYTRACER_BENCH_DIR, or ../shared/bench or shared/bench from here. */
@@ -107,16 +164,15 @@ public final class Bench {
                     file.flush();
                 }
             }, true, StandardCharsets.UTF_8);
-            return new Bench(both, err, runs, withPeers, benchDir, work, scenes).report();
+            return new Bench(both, err, runs, withPeers, benchDir, work, scenes, self).report();
         }
     }
 
     private int report() throws IOException, InterruptedException {
         Path sceneDir = sceneDirectory();
-        List<String> self = selfCommand();
-        out.println("# raytracer --bench");
+        out.println("# gradle bench");
         out.println();
-        out.println("- command: `" + String.join(" ", self) + " -q --stats SCENE -o PNG`");
+        out.println("- command: `" + String.join(" ", self) + " -q --stats --json SCENE -o PNG`");
         out.println("- scenes: " + sceneDir.toAbsolutePath().normalize());
         out.println("- machine: " + Runtime.getRuntime().availableProcessors() + " cores, " + cpuName() + "; "
                 + System.getProperty("java.vm.name") + " " + System.getProperty("java.version"));
@@ -145,7 +201,7 @@ public final class Bench {
             for (String s : scenes) {
                 Path scene = sceneDir.resolve(s + ".txt");
                 List<String> cmd = new ArrayList<>(self);
-                cmd.addAll(List.of("-q", "--stats", scene.toAbsolutePath().toString(), "-o", work.resolve(s + ".png").toAbsolutePath().toString()));
+                cmd.addAll(List.of("-q", "--stats", "--json", scene.toAbsolutePath().toString(), "-o", work.resolve(s + ".png").toAbsolutePath().toString()));
                 Path log = work.resolve(s + ".log");
                 double t = time(cmd, work, log);
                 String text = Files.readString(log, StandardCharsets.UTF_8);
@@ -223,27 +279,6 @@ public final class Bench {
 
     // ---- processes ----
 
-    /** How to start this program again: the installed launcher when there is one, else this JVM's command. */
-    static List<String> selfCommand() {
-        try {
-            Path jar = Path.of(Bench.class.getProtectionDomain().getCodeSource().getLocation().toURI());
-            Path launcher = jar.getParent().getParent().resolve("bin/raytracer");
-            if (Files.isRegularFile(jar) && Files.isExecutable(launcher)) {
-                return List.of(launcher.toString());
-            }
-        } catch (URISyntaxException | RuntimeException e) {
-            // fall through
-        }
-        List<String> cmd = new ArrayList<>();
-        cmd.add(ProcessHandle.current().info().command().orElse("java"));
-        for (String a : ManagementFactory.getRuntimeMXBean().getInputArguments()) {
-            if (!a.startsWith("-agentlib") && !a.startsWith("-javaagent") && !a.startsWith("-Xrunjdwp")) {
-                cmd.add(a);
-            }
-        }
-        cmd.addAll(List.of("-cp", System.getProperty("java.class.path"), "RayTracer"));
-        return cmd;
-    }
 
     /** Wall seconds of one run of {@code cmd} (stdout and stderr to {@code log}); -1 when it failed. */
     private static double time(List<String> cmd, Path dir, Path log) throws IOException, InterruptedException {
@@ -313,48 +348,54 @@ public final class Bench {
     // ---- the child's --stats line ----
 
     /** What one render reported with --stats. (Not a record: Gradle 4.4.1's class reader calls those malformed.) */
+    /**
+     * One render's numbers, read from the JSON object the launcher prints with {@code --stats --json}
+     * (keys in docs/json.md; rays by {@link RayKind#key()}).
+     */
     static final class Stats {
         final double parse, build, render, write, bvhBytes, cpu;
-        final long camera, shadow, mirror, peakMiB;
+        final long peakMiB;
+        final long[] rays = new long[RayKind.values().length];
 
-        Stats(double parse, double build, double render, double write, long camera, long shadow, long mirror,
-              long peakMiB, double bvhBytes, double cpu) {
-            this.parse = parse;
-            this.build = build;
-            this.render = render;
-            this.write = write;
-            this.camera = camera;
-            this.shadow = shadow;
-            this.mirror = mirror;
-            this.peakMiB = peakMiB;
-            this.bvhBytes = bvhBytes;
-            this.cpu = cpu;
-        }
-
-        private static final Pattern LINE = Pattern.compile(
-                "parse ([0-9.]+) s, build ([0-9.]+) s, render ([0-9.]+) s, write ([0-9.]+) s; ([0-9,]+) camera, ([0-9,]+) shadow, "
-                        + "([0-9,]+) mirror rays(?:; peak RSS ([0-9]+) MiB)?(?:; BVH ([0-9.]+) bytes/primitive)?(?:; cpu ([0-9.]+) s)?");
-
-        static Stats parse(String text) {
-            Matcher m = LINE.matcher(text);
-            if (!m.find()) {
-                return null;
+        private Stats(JsonObject o) {
+            JsonObject sec = o.getAsJsonObject("seconds");
+            parse = sec.get("parse").getAsDouble();
+            build = sec.get("build").getAsDouble();
+            render = sec.get("render").getAsDouble();
+            write = sec.get("write").getAsDouble();
+            cpu = o.get("cpuSeconds").getAsDouble();
+            peakMiB = o.get("peakRssBytes").getAsLong() >> 20;
+            bvhBytes = o.get("bvhBytesPerPrimitive").getAsDouble();
+            JsonObject r = o.getAsJsonObject("rays");
+            for (RayKind k : RayKind.values()) {
+                rays[k.ordinal()] = r.get(k.key()).getAsLong();
             }
-            return new Stats(d(m.group(1)), d(m.group(2)), d(m.group(3)), d(m.group(4)), l(m.group(5)), l(m.group(6)),
-                    l(m.group(7)), m.group(8) == null ? 0 : l(m.group(8)), m.group(9) == null ? 0 : d(m.group(9)),
-                    m.group(10) == null ? 0 : d(m.group(10)));
         }
 
-        private static double d(String s) {
-            return Double.parseDouble(s);
+        /** The stats object in a child's output (the line that is a JSON object), or null. */
+        static Stats parse(String text) {
+            for (String line : text.split("\n")) {
+                if (line.startsWith("{")) {
+                    try {
+                        return new Stats(JsonParser.parseString(line).getAsJsonObject());
+                    } catch (RuntimeException e) {   // malformed or a key missing: not the stats line
+                        return null;
+                    }
+                }
+            }
+            return null;
         }
 
-        private static long l(String s) {
-            return Long.parseLong(s.replace(",", ""));
+        long rays(RayKind k) {
+            return rays[k.ordinal()];
         }
 
         long rays() {
-            return camera + shadow + mirror;
+            long n = 0;
+            for (long r : rays) {
+                n += r;
+            }
+            return n;
         }
     }
 
@@ -373,10 +414,22 @@ public final class Bench {
         return median(v);
     }
 
+    /** "camera 1.23, shadow 0.40, mirror 0.00" (millions), every kind but those no run cast. */
+    private static String raysByKind(Stats a) {
+        StringBuilder b = new StringBuilder();
+        for (RayKind k : RayKind.values()) {
+            if (a.rays(k) != 0 || k.ordinal() <= RayKind.MIRROR.ordinal()) {
+                b.append(b.length() == 0 ? "" : ", ").append(k.key()).append(' ')
+                        .append(String.format(Locale.ROOT, "%.2f", a.rays(k) / 1e6));
+            }
+        }
+        return b.toString();
+    }
+
     private void printProcessTable(Map<String, Map<String, List<Double>>> times, Map<String, List<Stats>> stats) {
         out.println("## Whole process (median of " + runs + "; the split and memory as the process reports them)");
         out.println();
-        out.println("| scene | wall s | cpu s | parse s | build s | render s | write s | rays camera / shadow / mirror | render Mrays/s (all threads) | peak RSS MiB | BVH bytes/primitive |");
+        out.println("| scene | wall s | cpu s | parse s | build s | render s | write s | rays by kind (M) | render Mrays/s (all threads) | peak RSS MiB | BVH bytes/primitive |");
         out.println("|---|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|");
         for (String s : scenes) {
             List<Stats> l = stats.get(s);
@@ -386,10 +439,10 @@ public final class Bench {
             }
             Stats a = l.get(0);
             double render = medianOf(l, x -> x.render);
-            out.println(String.format(Locale.ROOT, "| %s | %.2f | %.2f | %.3f | %.3f | %.3f | %.3f | %.2f M / %.2f M / %.2f M | %.1f | %.0f | %.1f |",
+            out.println(String.format(Locale.ROOT, "| %s | %.2f | %.2f | %.3f | %.3f | %.3f | %.3f | %s | %.1f | %.0f | %.1f |",
                     s, median(times.get(s).get("raytracer")), medianOf(l, x -> x.cpu), medianOf(l, x -> x.parse),
-                    medianOf(l, x -> x.build), render, medianOf(l, x -> x.write), a.camera / 1e6, a.shadow / 1e6,
-                    a.mirror / 1e6, a.rays() / render / 1e6, medianOf(l, x -> x.peakMiB), a.bvhBytes));
+                    medianOf(l, x -> x.build), render, medianOf(l, x -> x.write), raysByKind(a),
+                    a.rays() / render / 1e6, medianOf(l, x -> x.peakMiB), a.bvhBytes));
         }
         out.println();
     }
@@ -423,11 +476,20 @@ public final class Bench {
         out.println();
     }
 
+    /** The installed launcher's JVM options, as build.gradle hands them to this JVM (ray.bench.launcherJvmArgs). */
+    private static List<String> launcherJvmArgs() {
+        String a = System.getProperty("ray.bench.launcherJvmArgs", "-XX:+UseParallelGC -XX:TieredStopAtLevel=1").trim();
+        return List.of(a.split("\\s+"));
+    }
+
     /** A JVM like this one (its class path), running {@code ray.bench.Throughput} with the given JIT. */
     private static List<String> throughputCommand(boolean fullJit, String... args) {
-        List<String> cmd = new ArrayList<>(List.of(ProcessHandle.current().info().command().orElse("java"),
-                "-XX:+UseParallelGC", fullJit ? "-XX:TieredStopAtLevel=4" : "-XX:TieredStopAtLevel=1",
-                "-cp", System.getProperty("java.class.path"), "ray.bench.Throughput"));
+        List<String> cmd = new ArrayList<>(List.of(ProcessHandle.current().info().command().orElse("java")));
+        cmd.addAll(launcherJvmArgs());
+        if (fullJit) {
+            cmd.add("-XX:TieredStopAtLevel=4");   // the last one wins
+        }
+        cmd.addAll(List.of("-cp", System.getProperty("java.class.path"), "ray.bench.Throughput"));
         cmd.addAll(List.of(args));
         return cmd;
     }
@@ -435,13 +497,18 @@ public final class Bench {
     private void printKindTable(Path sceneDir) throws IOException, InterruptedException {
         out.println("## Rays per second by kind, acceleration structure alone (1 thread, after warm-up)");
         out.println();
-        out.println("Camera rays at pixel centres (closest hit with the hit record filled in), the shadow rays their hits "
-                + "send to the lights (any hit), the mirror rays they send off glazed surfaces (closest hit); median of 7 "
-                + "passes, Mrays/s, each scene in a fresh JVM. C1: the launcher's JIT setting (-XX:TieredStopAtLevel=1); "
-                + "C2: the full JIT, for the steady state of a long render.");
+        out.println("Camera rays at pixel centres (closest hit with the hit record filled in) and every ray a render of "
+                + "them casts, recorded by kind (shadow rays: any hit; the others: closest hit); median of 7 "
+                + "passes, Mrays/s, each scene in a fresh JVM. C1: the launcher's JVM options (" + String.join(" ", launcherJvmArgs())
+                + "); C2: the full JIT, for the steady state of a long render.");
         out.println();
-        out.println("| scene, JIT | camera | shadow | mirror | camera rays, any hit |");
-        out.println("|---|---:|---:|---:|---:|");
+        StringBuilder head = new StringBuilder("| scene, JIT |"), rule = new StringBuilder("|---|");
+        for (ray.RayKind k : ray.RayKind.values()) {
+            head.append(' ').append(k.key()).append(" |");
+            rule.append("---:|");
+        }
+        out.println(head + " camera rays, any hit |");
+        out.println(rule + "---:|");
         for (String s : scenes) {
             for (boolean c2 : new boolean[] {false, true}) {
                 Path log = work.resolve("throughput.log");
