@@ -72,6 +72,16 @@ public final class Main implements Callable<Integer> {
     @Option(names = "--bench-work", paramLabel = "DIR", description = "with --bench: where images, logs and generated scenes go (default: a raytracer-bench directory in the temporary directory)")
     Path benchWork;
 
+    @Option(names = "--study", description = "accuracy study: render each scene with every sampler and setting, time it and "
+            + "measure its error against a converged reference; report in --report-dir (default build/reports/accuracy)")
+    boolean study;
+
+    @Option(names = "--quick", description = "with --study: a smaller grid of settings (n_s up to 4)")
+    boolean quick;
+
+    @Option(names = "--report-dir", paramLabel = "DIR", description = "with --study: where the CSVs, plots and index.html go")
+    Path reportDir;
+
     private PrintStream out = System.out;
     private PrintStream err = System.err;
 
@@ -195,6 +205,14 @@ public final class Main implements Callable<Integer> {
                 Thread.currentThread().interrupt();
                 return 1;
             }
+        }
+        if (study) {
+            if (scenes.isEmpty() || output != null) {
+                err.println("raytracer: --study takes scene files and no --output (see --help)");
+                return 2;
+            }
+            return ray.study.Study.run(scenes, quick, reportDir != null ? reportDir : Path.of("build", "reports", "accuracy"),
+                    threads, out, err, !this.quiet && System.console() != null);
         }
         if (output != null && scenes.size() != 1) {
             err.println("raytracer: --output needs exactly one scene file");

@@ -45,24 +45,15 @@ public class GlazedMaterial extends Material {
         } else {
             out.set(0, 0, 0);
         }
-        // inside framework-style material code, ctx.level is the depth of the rays it traces: one more
-        // than the ray it is shading (which may be a fresh Ray of depth 0 it made itself)
-        int depth = Math.max(ray.depth, ctx.level - 1);
-        if (mirrorCoefficient == 0 || depth >= scene.maxDepth) {
+        if (mirrorCoefficient == 0) {
             return;
         }
-        // mirror direction r = d - 2 (d.n) n
-        Vector3d d = ray.direction, n = rec.normal;
-        double dn = 2 * (d.x * n.x + d.y * n.y + d.z * n.z);
-        Ray mirror = ctx.ray(depth + 1);
-        rec.spawnRay(d.x - dn * n.x, d.y - dn * n.y, d.z - dn * n.z, mirror);
-        mirror.depth = depth + 1;
-        Vector3d c = ctx.color(depth + 1);
-        ctx.stats.mirror++;
-        scene.traceInto(mirror, ctx, c);
-        out.x += mirrorCoefficient * c.x;
-        out.y += mirrorCoefficient * c.y;
-        out.z += mirrorCoefficient * c.z;
+        Vector3d c = scene.traceMirror(ray, rec, ctx);   // null past MaxDepth: adds nothing
+        if (c != null) {
+            out.x += mirrorCoefficient * c.x;
+            out.y += mirrorCoefficient * c.y;
+            out.z += mirrorCoefficient * c.z;
+        }
     }
 
     @Override

@@ -174,8 +174,7 @@ public final class Renderer {
             double pb = planeB[y * ns + j];
             for (int i = 0; i < ns; i++, s++) {
                 scene.camera.setRay(ray, planeA[x * ns + i], pb);
-                ctx.stats.camera++;
-                scene.traceInto(ray, ctx, c);
+                scene.traceCamera(ray, ctx, c);
                 if (Double.isFinite(c.x) && Double.isFinite(c.y) && Double.isFinite(c.z)) {
                     r += c.x;
                     g += c.y;
@@ -195,8 +194,7 @@ public final class Renderer {
         Vector3d c = ctx.color(0);
         for (int s = 0; s < count; s++) {
             scene.camera.setRayThrough(ctx.ray(0), x + offsets[2 * s], y + offsets[2 * s + 1], scene.width, scene.height);
-            ctx.stats.camera++;
-            scene.traceInto(ctx.ray(0), ctx, c);
+            scene.traceCamera(ctx.ray(0), ctx, c);
             if (Double.isFinite(c.x) && Double.isFinite(c.y) && Double.isFinite(c.z)) {
                 r += c.x;
                 g += c.y;

@@ -27,6 +27,16 @@ public abstract class Surface implements SceneObject {
         return Aabb.infinite();
     }
 
+    /**
+     * The primitives the acceleration structure holds for this scene object: by default the object
+     * itself. A surface made of many parts (a mesh of triangles) adds its parts instead, each a
+     * {@code Surface} with its own {@link #bounds()} and {@link #intersects} and its {@link #material}
+     * set; a hit then reports the part as {@code record.surface}. Called once per {@link Scene#prepare()}.
+     */
+    public void collectPrimitives(java.util.List<Surface> out) {
+        out.add(this);
+    }
+
     /** True when the surface can never be hit (e.g. a zero-area triangle); it is left out of the scene. */
     public boolean isDegenerate() {
         return false;
