@@ -20,7 +20,7 @@ import ray.accel.Aabb;
  * </pre>
  *
  * In the cone's frame (z along the axis, apex at z = h, k = r / h) the side is
- * x^2 + y^2 = k^2 (h - z)^2 (pbrt-v3, section 3.8.1 "Cones", closed here by the base disc). The solid is
+ * x^2 + y^2 = k^2 (h - z)^2 (pbrt-v3, section 3.5.1 "Cones", closed here by the base disc). The solid is
  * the nappe of that double cone that holds the base, cut by the slab 0 <= z <= h; the ray's span
  * inside the nappe comes from the quadratic (solved in the stable form, after moving the ray's origin
  * to its closest approach to the cone's middle, so the coefficients are of the cone's size), its span

@@ -8,7 +8,7 @@ import ray.accel.Aabb;
 
 /**
  * A flat disc, seen from both sides: the {@link Plane} through {@code center} with this normal,
- * clipped to {@code radius} around the centre (pbrt-v4, section 6.5 "Disks", without the inner radius
+ * clipped to {@code radius} around the centre (pbrt-v4, section 6.4 "Disks", without the inner radius
  * and sweep). It uses the plane's own kernel, so where the disc is, it renders exactly as that plane.
  *
  * <pre>

@@ -16,7 +16,8 @@ import ray.Scene;
  * ref material floor
  * </pre>
  *
- * The ray/plane test is t = ((point - o) . n) / (d . n) (pbrt-v4 and Shirley's book alike); the hit
+ * The ray/plane test is t = ((point - o) . n) / (d . n) (Haines, "Essential Ray Tracing Algorithms", in
+ * Glassner, An Introduction to Ray Tracing, 1989); the hit
  * point is projected back onto the plane, so it lies on it to rounding whatever the ray's length.
  * A plane has no bounds: the BVH tests it against every ray.
  */

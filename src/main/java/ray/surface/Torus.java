@@ -22,8 +22,8 @@ import ray.accel.Aabb;
  * </pre>
  *
  * A ray meets the torus where the quartic (|p|^2 + R^2 - r^2)^2 - 4 R^2 (x^2 + y^2) = 0 (Hanrahan,
- * "Ray Tracing Algebraic Surfaces", SIGGRAPH 1983; Cychosz, "Intersecting a Ray with a Quartic Surface",
- * Graphics Gems III, 1992). Closed-form quartic formulas lose most digits at grazing angles and far from
+ * "Ray Tracing Algebraic Surfaces", SIGGRAPH 1983; Cychosz, "Intersecting a Ray with an Elliptical Torus",
+ * Graphics Gems II, 1991). Closed-form quartic formulas lose most digits at grazing angles and far from
  * the torus, so they are not used:
  * <ol>
  * <li>In the torus's frame, the ray's origin is moved to its closest approach to the centre and its
