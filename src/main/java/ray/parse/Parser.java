@@ -56,6 +56,8 @@ public final class Parser {
     private final Map<String, Integer> currentFields = new HashMap<>();
     private int cameraLine;
     private int degenerate;
+    /** Surfaces other surfaces are built from (CSG operands): left out of the scene at the end. */
+    private final java.util.Set<Surface> operands = java.util.Collections.newSetFromMap(new java.util.IdentityHashMap<>());
     private int firstDegenerateLine;
 
     private int line;
@@ -470,6 +472,11 @@ public final class Parser {
                 if (flat && degenerate++ == 0) {
                     firstDegenerateLine = line;
                 }
+                try {
+                    operands.addAll(s.operands());
+                } catch (RuntimeException | LinkageError e) {
+                    throw error(o.getClass().getSimpleName() + ".operands() failed: " + describe(e));
+                }
                 scene.surfaces.add(s);
                 break;
             case "Material":
@@ -541,6 +548,15 @@ public final class Parser {
         if (Double.isNaN(scene.camera.aspect)) {
             scene.camera.aspect = (double) scene.width / scene.height;
             scene.camera.recalculate();
+        }
+        if (!operands.isEmpty()) {
+            List<Surface> rendered = new ArrayList<>(scene.surfaces.size());
+            for (Surface s : scene.surfaces) {
+                if (!operands.contains(s)) {
+                    rendered.add(s);
+                }
+            }
+            scene.surfaces = rendered;
         }
         if (degenerate > 0) {
             warnings.add(file + ":" + firstDegenerateLine + ": warning: zero-area triangle, never hit"

@@ -117,6 +117,12 @@ public class Box extends Surface {
         return x > minPoint.x && x < maxPoint.x && y > minPoint.y && y < maxPoint.y && z > minPoint.z && z < maxPoint.z;
     }
 
+    /** Closed: a solid, hit from inside with {@code frontFace} false, so it can be a CSG operand. */
+    @Override
+    public boolean isClosed() {
+        return true;
+    }
+
     @Override
     public Aabb bounds() {
         return new Aabb(minPoint.x, minPoint.y, minPoint.z, maxPoint.x, maxPoint.y, maxPoint.z);

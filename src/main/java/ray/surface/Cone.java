@@ -179,6 +179,12 @@ public class Cone extends Surface {
         return c > 0 && c < height && a * a + b * b < rr * rr;
     }
 
+    /** Closed: a solid, hit from inside with {@code frontFace} false, so it can be a CSG operand. */
+    @Override
+    public boolean isClosed() {
+        return true;
+    }
+
     @Override
     public Aabb bounds() {
         double pad = 1e-12 * (Frame.maxAbs(base) + radius + height);

@@ -259,6 +259,12 @@ public class Torus extends Surface {
                 majorRadius, minorRadius) < 0;
     }
 
+    /** Closed: a solid, hit from inside with {@code frontFace} false, so it can be a CSG operand. */
+    @Override
+    public boolean isClosed() {
+        return true;
+    }
+
     @Override
     public Aabb bounds() {
         double pad = 1e-12 * (Frame.maxAbs(center) + majorRadius + minorRadius);

@@ -61,4 +61,22 @@ class PrimitiveBadInputTest {
         };
         assertSame(expected, surface.getClass());
     }
+
+    /** Box, Cylinder, Cone and Torus are closed (CSG operands); Plane and Disc are not. */
+    @ParameterizedTest(name = "{0} minus {1}")
+    @CsvSource({"Box, Torus, true", "Cylinder, Cone, true", "Plane, Box, false", "Box, Disc, false"})
+    void closedPrimitivesAreCsgOperandsAndFlatOnesAreNot(String left, String right, boolean closed) throws Exception {
+        String text = HEAD + "Surface " + left + " a\nref material m\n\nSurface " + right + " b\nref material m\n\n"
+                + "Surface CSG\nString operation difference\nref left a\nref right b\nref material m\n";
+        if (closed) {
+            Scene s = Parser.parse(text, "scene.txt", new ArrayList<>());
+            assertEquals(1, s.surfaces.size());
+        } else {
+            SceneFormatException e = assertThrows(SceneFormatException.class, () -> Parser.parse(text, "scene.txt", new ArrayList<>()));
+            String flat = left.equals("Box") ? right : left;
+            String side = left.equals("Box") ? "right" : "left";
+            assertEquals("scene.txt:14: Surface CSG: " + side + " operand " + flat + " is not a closed surface (expected Sphere, Box,"
+                    + " Cylinder, Cone, Torus, CSG or a closed two-sided Mesh)", e.getMessage());
+        }
+    }
 }

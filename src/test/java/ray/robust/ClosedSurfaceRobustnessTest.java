@@ -17,6 +17,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import ray.IntersectionRecord;
 import ray.Ray;
+import ray.surface.CSG;
 
 /**
  * The closed primitives (0 Box, 1 Cylinder, 2 Cone, 3 Torus) at scales 1e-4..1e4 and up to a million
@@ -128,6 +129,40 @@ class ClosedSurfaceRobustnessTest {
                 if (hit) {
                     assertFalse(again.frontFace, "the far side is hit from behind: " + what);
                 }
+            }
+        });
+    }
+
+    /**
+     * As CSG operands (which walk an operand's crossings with tMin = nextUp(t)): the union and the
+     * intersection of a shape with itself are the shape, record for record, on rays from inside and out.
+     */
+    @ParameterizedTest(name = "{0}")
+    @ValueSource(ints = {0, 1, 2, 3})
+    void shapeCombinedWithItselfInCsgIsTheShape(int kind) {
+        forEachSeed(0xc5e1fL + 1000 * kind, 1000, r -> {
+            ClosedShapes sh = ClosedShapes.random(kind, r, logUniform(r, 1e-4, 1e4), 1e6);
+            Vector3d q = sh.inside(r);
+            Vector3d o = origin(r, sh, q);
+            if (Math.abs(sh.residual(o)) < 1e-6 * sh.size()) {
+                return;
+            }
+            Ray ray = new Ray(o, unnormalised(r, sub(q, o)));
+            ray.tMin = 0;
+            IntersectionRecord alone = new IntersectionRecord();
+            assertTrue(sh.surface.intersects(ray, alone, null), "missed: " + sh.surface + ", " + ray);
+            for (String op : new String[] {"union", "intersection"}) {
+                CSG csg = new CSG();
+                csg.operation = op;
+                csg.left = sh.surface;
+                csg.right = sh.surface;
+                csg.init();
+                IntersectionRecord rec = new IntersectionRecord();
+                String what = op + " of " + sh.surface + " with itself, " + ray + ": alone " + alone;
+                assertTrue(csg.intersects(ray, rec, null), "missed: " + what);
+                assertEquals(alone.t, rec.t, what + ", CSG " + rec);
+                assertEquals(alone.frontFace, rec.frontFace, what + ", CSG " + rec);
+                assertEquals(alone.location, rec.location, what + ", CSG " + rec);
             }
         });
     }
