@@ -141,7 +141,7 @@ final class ClassResolver {
             case "Camera": return "Camera";
             case "Surface": return "Sphere, Triangle, Plane, Disc, Box, Cylinder, Cone, Torus";
             case "Material": return "Diffuse, BlinnPhong, GlazedMaterial (or Glazed), DielectricMaterial (or Dielectric)";
-            default: return "PointLight";
+            default: return "PointLight, SpotLight, AreaLight";
         }
     }
 }
