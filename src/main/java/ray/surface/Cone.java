@@ -4,7 +4,6 @@ import javax.vecmath.Vector3d;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.Scene;
-import ray.accel.Aabb;
 
 /**
  * A closed right circular cone: the side from the base circle to the apex, and the base disc. Its
@@ -28,27 +27,9 @@ import ray.accel.Aabb;
  * the overlap ends). Side and base are decided by one comparison (no crack at the rim). The hit point
  * is put on the part it hit.
  */
-public class Cone extends Surface {
+public class Cone extends AxialSurface {
 
-    /** Relative rounding-error bound of a hit point moved back to world coordinates (generous). */
-    static final double ERROR = 64 * Frame.EPS;
     private static final int SIDE = 0, BASE = 1;
-
-    public Vector3d base = new Vector3d();
-    public Vector3d axis = new Vector3d(0, 1, 0);
-    public double radius = 1;
-
-    private Frame frame = new Frame(0, 1, 0);
-    private double height = 1;
-
-    @Override
-    public void init() {
-        Frame.requireFinite(base, "cone base");
-        Frame.requireDirection(axis, "cone axis");
-        Frame.requirePositive(radius, "cone radius");
-        frame = new Frame(axis.x, axis.y, axis.z);
-        height = axis.length();
-    }
 
     @Override
     public boolean intersects(Ray ray, IntersectionRecord record, Scene scene) {
@@ -163,37 +144,13 @@ public class Cone extends Surface {
                 y *= r / rho;
             }
         }
-        record.location.set(base.x + f.worldX(x, y, z), base.y + f.worldY(x, y, z), base.z + f.worldZ(x, y, z));
-        Frame.face(record, f.worldX(nx, ny, nz), f.worldY(nx, ny, nz), f.worldZ(nx, ny, nz), front);
-        record.t = t;
-        record.error = ERROR * (Frame.maxAbs(base) + r + h);
-        record.surface = this;
-        return true;
-    }
-
-    /** True when (x, y, z) lies strictly inside the cone. */
-    public boolean isInside(double x, double y, double z) {
-        double ex = x - base.x, ey = y - base.y, ez = z - base.z;
-        double a = frame.u(ex, ey, ez), b = frame.v(ex, ey, ez), c = frame.w(ex, ey, ez);
-        double rr = radius / height * (height - c);
-        return c > 0 && c < height && a * a + b * b < rr * rr;
-    }
-
-    /** Closed: a solid, hit from inside with {@code frontFace} false, so it can be a CSG operand. */
-    @Override
-    public boolean isClosed() {
+        fill(record, t, x, y, z, nx, ny, nz, front);
         return true;
     }
 
     @Override
-    public Aabb bounds() {
-        double pad = 1e-12 * (Frame.maxAbs(base) + radius + height);
-        double ex = radius * frame.circleExtent(0) + pad;
-        double ey = radius * frame.circleExtent(1) + pad;
-        double ez = radius * frame.circleExtent(2) + pad;
-        Aabb b = new Aabb(base.x - ex, base.y - ey, base.z - ez, base.x + ex, base.y + ey, base.z + ez);
-        b.include(base.x + axis.x, base.y + axis.y, base.z + axis.z);
-        return b;
+    double radiusAt(double z) {
+        return radius / height * (height - z);
     }
 
     @Override

@@ -4,7 +4,6 @@ import javax.vecmath.Vector3d;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.Scene;
-import ray.accel.Aabb;
 
 /**
  * A closed circular cylinder: the side and both caps. Its normals point outward; seen from inside, the
@@ -26,27 +25,9 @@ import ray.accel.Aabb;
  * ends). Side and caps are decided by one comparison, so the rim has no crack and no double hit. The
  * hit point is put on the part it hit (radius exactly r on the side, height exactly 0 or h on a cap).
  */
-public class Cylinder extends Surface {
+public class Cylinder extends AxialSurface {
 
-    /** Relative rounding-error bound of a hit point moved back to world coordinates (generous). */
-    static final double ERROR = 64 * Frame.EPS;
     private static final int SIDE = 0, BOTTOM = 1, TOP = 2;
-
-    public Vector3d base = new Vector3d();
-    public Vector3d axis = new Vector3d(0, 1, 0);
-    public double radius = 1;
-
-    private Frame frame = new Frame(0, 1, 0);
-    private double height = 1;
-
-    @Override
-    public void init() {
-        Frame.requireFinite(base, "cylinder base");
-        Frame.requireDirection(axis, "cylinder axis");
-        Frame.requirePositive(radius, "cylinder radius");
-        frame = new Frame(axis.x, axis.y, axis.z);
-        height = axis.length();
-    }
 
     @Override
     public boolean intersects(Ray ray, IntersectionRecord record, Scene scene) {
@@ -130,11 +111,7 @@ public class Cylinder extends Surface {
                 y *= r / rho;
             }
         }
-        record.location.set(base.x + f.worldX(x, y, z), base.y + f.worldY(x, y, z), base.z + f.worldZ(x, y, z));
-        Frame.face(record, f.worldX(nx, ny, nz), f.worldY(nx, ny, nz), f.worldZ(nx, ny, nz), front);
-        record.t = t;
-        record.error = ERROR * (Frame.maxAbs(base) + r + h);
-        record.surface = this;
+        fill(record, t, x, y, z, nx, ny, nz, front);
         return true;
     }
 
@@ -142,32 +119,9 @@ public class Cylinder extends Surface {
         return v < lo ? lo : v > hi ? hi : v;
     }
 
-    /** True when (x, y, z) lies strictly inside the cylinder. */
-    public boolean isInside(double x, double y, double z) {
-        double ex = x - base.x, ey = y - base.y, ez = z - base.z;
-        double a = frame.u(ex, ey, ez), b = frame.v(ex, ey, ez), c = frame.w(ex, ey, ez);
-        return c > 0 && c < height && a * a + b * b < radius * radius;
-    }
-
-    /** Closed: a solid, hit from inside with {@code frontFace} false, so it can be a CSG operand. */
     @Override
-    public boolean isClosed() {
-        return true;
-    }
-
-    @Override
-    public Aabb bounds() {
-        double pad = 1e-12 * (Frame.maxAbs(base) + radius + height);
-        Aabb b = new Aabb();
-        for (int end = 0; end < 2; end++) {
-            double cx = base.x + end * axis.x, cy = base.y + end * axis.y, cz = base.z + end * axis.z;
-            double ex = radius * frame.circleExtent(0) + pad;
-            double ey = radius * frame.circleExtent(1) + pad;
-            double ez = radius * frame.circleExtent(2) + pad;
-            b.include(cx - ex, cy - ey, cz - ez);
-            b.include(cx + ex, cy + ey, cz + ez);
-        }
-        return b;
+    double radiusAt(double z) {
+        return radius;
     }
 
     @Override
