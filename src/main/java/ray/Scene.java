@@ -30,6 +30,10 @@ public class Scene {
     public int height;
     /** n_s: each pixel is the mean of n_s x n_s samples. */
     public int samplesPerPixel = 1;
+    /** The scene's {@code Sampler} global: one of {@code ray.render.Sampler.NAMES} (grid, the default). */
+    public String sampler = "grid";
+    /** The scene's {@code TargetError} global: the adaptive sampler's target, in 8-bit steps. */
+    public double targetError = 0.5;
     /** Mirror bounces followed (0: the bases of glazed materials only). */
     public int maxDepth = 10;
     public List<Surface> surfaces = new ArrayList<>();

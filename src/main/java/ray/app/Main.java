@@ -41,6 +41,9 @@ public final class Main implements Callable<Integer> {
     @Option(names = {"-j", "--threads"}, paramLabel = "N", description = "render threads (default: all cores, ${DEFAULT-VALUE})")
     int threads = Runtime.getRuntime().availableProcessors();
 
+    @CommandLine.Mixin
+    SamplingOptions sampling = new SamplingOptions();
+
     @Option(names = {"-q", "--quiet"}, description = "print nothing but errors")
     boolean quiet;
 
@@ -187,6 +190,10 @@ public final class Main implements Callable<Integer> {
             err.println("raytracer: --threads must be at least 1");
             return 2;
         }
+        if (sampling.problem() != null) {
+            err.println("raytracer: " + sampling.problem());
+            return 2;
+        }
         if (bench) {
             if (!scenes.isEmpty() || output != null || runs < 1) {
                 err.println("raytracer: --bench takes no scene files and no --output, and --runs must be at least 1");
@@ -262,6 +269,7 @@ public final class Main implements Callable<Integer> {
         for (String w : warnings) {
             err.println(w);
         }
+        sampling.applyTo(scene);
         long t1 = System.nanoTime();
         Renderer renderer = new Renderer(scene).threads(threads);
         ProgressLine progress = !quiet && err == System.err && System.console() != null
@@ -296,6 +304,7 @@ public final class Main implements Callable<Integer> {
         if (!quiet) {
             out.println(scenePath + " -> " + png + " (" + scene.width + "x" + scene.height + ", " + scene.samplesPerPixel
                     + "x" + scene.samplesPerPixel + " AA, " + fixed(t3 - t0, 2) + " s)");
+            SamplingOptions.report(out, renderer.summary());
         }
         if (stats) {
             long build = scene.accelerator() instanceof Bvh b ? b.buildNanos() : 0;

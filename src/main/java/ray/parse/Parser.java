@@ -32,10 +32,11 @@ import ray.surface.Surface;
  */
 public final class Parser {
 
-    static final List<String> GLOBALS = List.of("BGColor", "AmbientLight", "Width", "Height", "AASamples", "MaxDepth");
+    static final List<String> GLOBALS = List.of("BGColor", "AmbientLight", "Width", "Height", "AASamples", "MaxDepth", "Sampler",
+            "TargetError");
     static final List<String> TYPES = List.of("int", "double", "String", "ref", "Vector3d");
     private static final List<String> KEYWORDS = List.of("Camera", "Surface", "Material", "Light",
-            "BGColor", "AmbientLight", "Width", "Height", "AASamples", "MaxDepth", "int", "double", "String", "ref", "Vector3d");
+            "BGColor", "AmbientLight", "Width", "Height", "AASamples", "MaxDepth", "Sampler", "TargetError", "int", "double", "String", "ref", "Vector3d");
 
     private final String file;
     private final ClassResolver resolver;
@@ -498,7 +499,8 @@ public final class Parser {
         }
         if (value.isEmpty()) {
             throw error("'" + key + "' needs a value (expected '" + key + " " + (vector ? "[r g b]" : key.equals("AASamples") ? "<n>"
-                    : key.equals("MaxDepth") ? "<bounces>" : "<pixels>") + "')");
+                    : key.equals("MaxDepth") ? "<bounces>" : key.equals("Sampler") ? "<name>"
+                    : key.equals("TargetError") ? "<8-bit steps>" : "<pixels>") + "')");
         }
         try {
             switch (key) {
@@ -507,11 +509,29 @@ public final class Parser {
                 case "Width" -> scene.width = range(value, key, 1, Limits.MAX_SIDE);
                 case "Height" -> scene.height = range(value, key, 1, Limits.MAX_SIDE);
                 case "AASamples" -> scene.samplesPerPixel = range(value, key, 1, Limits.MAX_AA_SAMPLES);
+                case "Sampler" -> scene.sampler = samplerName(value);
+                case "TargetError" -> scene.targetError = targetError(value);
                 default -> scene.maxDepth = range(value, key, 0, Limits.MAX_DEPTH);
             }
         } catch (Problem p) {
             throw error(p.getMessage());
         }
+    }
+
+    private static String samplerName(String value) throws Problem {
+        if (!ray.render.Sampler.NAMES.contains(value)) {
+            throw new Problem(Values.quote("Sampler " + value) + " names no sampler (" + Values.caseHint(value, ray.render.Sampler.NAMES)
+                    + "expected one of " + String.join(", ", ray.render.Sampler.NAMES) + ")");
+        }
+        return value;
+    }
+
+    private static double targetError(String value) throws Problem {
+        double e = Values.parseDouble(value, "TargetError");
+        if (!(e >= 0) || e > 255) {
+            throw new Problem(Values.quote("TargetError " + value) + " is out of range (expected 0 to 255 8-bit steps)");
+        }
+        return e;
     }
 
     private static int range(String value, String key, int min, int max) throws Problem {
