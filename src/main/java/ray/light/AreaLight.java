@@ -3,13 +3,17 @@ package ray.light;
 import javax.vecmath.Vector3d;
 import ray.IntersectionRecord;
 import ray.Scene;
+import ray.TraceContext;
+import ray.render.PixelSample;
 
 /**
  * A rectangular light: the parallelogram {@code position +- edge1/2 +- edge2/2}, cut into n x n cells.
  * Sample k (k = i + n j) is a point light of intensity I / n^2 at one point of cell (i, j), falling off
- * as r^-2 and shadowed on its own (stratified sampling: Cook, Porter and Carpenter 1984, "Distributed
- * ray tracing"; Shirley et al., Fundamentals of Computer Graphics, 2nd ed., sect. 10.10). So the light
- * that arrives converges to (I / A) times the solid angle-weighted integral over the rectangle, and a
+ * as r^-2 and shadowed on its own. Where in its cell comes from the render's sampler (two dimensions of
+ * the pixel sample per light sample): the grid sampler, the default, puts it at the cell's centre, a
+ * jittered or Sobol sampler anywhere in the cell (stratified sampling: Cook, Porter and Carpenter 1984,
+ * "Distributed ray tracing"; Shirley et al., Fundamentals of Computer Graphics, 2nd ed., sect. 10.10).
+ * The light arriving converges to (I / A) times the integral of cos / r^2 over the rectangle, and a
  * vanishingly small area light is a {@link PointLight}. Like point lights, area lights are not seen
  * directly.
  *
@@ -69,11 +73,11 @@ public class AreaLight extends Light {
     public boolean sample(IntersectionRecord record, Scene scene, int index, LightSample out) {
         int n = samples;
         Vector3d p = record.location;
-        // the point in cell (i, j): offsets a, b in [0, 1) within the cell
-        long h = cellHash(p, index);
-        double a = (h >>> 11) * 0x1p-53;
-        double b = (mix(h) >>> 11) * 0x1p-53;
-        double s = ((index % n) + a) / n - 0.5, t = ((index / n) + b) / n - 0.5;
+        // the point in cell (i, j): offsets (a, b) in [0, 1)^2 within the cell, the next 2D dimensions of
+        // this pixel sample (the grid sampler gives the cell's centre, jittered and sobol a point in it)
+        PixelSample ps = TraceContext.current(scene).sample;
+        ps.next2D();
+        double s = ((index % n) + ps.u) / n - 0.5, t = ((index / n) + ps.v) / n - 0.5;
         double lx = position.x + s * edge1.x + t * edge2.x;
         double ly = position.y + s * edge1.y + t * edge2.y;
         double lz = position.z + s * edge1.z + t * edge2.z;
@@ -90,23 +94,6 @@ public class AreaLight extends Light {
         out.intensity.set(intensity.x * k, intensity.y * k, intensity.z * k);
         out.shadowTested = false;
         return PointLight.finite(out.intensity);
-    }
-
-    /**
-     * A deterministic hash of the shading point and the sample index: the point is a function of the
-     * pixel, the pixel sample and the path, so the image does not depend on threads or tile order.
-     */
-    private static long cellHash(Vector3d p, int index) {
-        long h = mix(Double.doubleToLongBits(p.x) + 0x9E3779B97F4A7C15L * (index + 1));
-        h = mix(h ^ Double.doubleToLongBits(p.y));
-        return mix(h ^ Double.doubleToLongBits(p.z));
-    }
-
-    /** SplitMix64's finaliser (Steele, Lea and Flood 2014). */
-    private static long mix(long z) {
-        z = (z ^ (z >>> 30)) * 0xBF58476D1CE4E5B9L;
-        z = (z ^ (z >>> 27)) * 0x94D049BB133111EBL;
-        return z ^ (z >>> 31);
     }
 
     @Override

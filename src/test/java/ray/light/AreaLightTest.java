@@ -8,14 +8,18 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.ArrayList;
 import javax.vecmath.Vector3d;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 import ray.Camera;
 import ray.IntersectionRecord;
 import ray.RayKind;
 import ray.Scene;
+import ray.TraceContext;
 import ray.parse.Parser;
 import ray.parse.SceneFormatException;
 import ray.render.Image;
 import ray.render.Renderer;
+import ray.render.Sampler;
 
 /**
  * n x n point lights of I / n^2, one in each cell. Summed over a rectangle, sum (I/n^2) cos / r^2
@@ -42,10 +46,14 @@ class AreaLightTest {
         return rec;
     }
 
-    /** sum over samples of intensity.x * max(0, n.l): what a Diffuse material with k_d = 1 adds. */
-    static double irradiance(AreaLight l, IntersectionRecord rec) {
+    /**
+     * sum over samples of intensity.x * max(0, n.l): what a Diffuse material with k_d = 1 adds, for pixel
+     * sample 0 of pixel (px, 0) of {@code sampler}.
+     */
+    static double irradiance(AreaLight l, IntersectionRecord rec, Sampler sampler, int px) {
         Scene s = new Scene();
         s.camera = new Camera();
+        TraceContext.current(s).sample.start(sampler, px, 0, 0);
         LightSample out = new LightSample();
         double e = 0;
         for (int k = 0; k < l.sampleCount(); k++) {
@@ -67,12 +75,23 @@ class AreaLightTest {
     }
 
     /**
-     * At every point the n x n estimate approaches (I / A) Omega; over a set of points the RMS relative
-     * error falls with each doubling of n (one point's jittered error need not: that is noise), and is
-     * below 1e-3 at n = 64.
+     * At every point the n x n estimate approaches (I / A) Omega, whichever sampler places the points in
+     * their cells (grid: the centres, a midpoint rule); over a set of points the RMS relative error falls
+     * with each doubling of n (one point's jittered error need not: that is noise), and is below 1e-3 at
+     * n = 64.
      */
-    @Test
-    void irradianceConvergesToTheAnalyticSolidAngleFormula() {
+    @ParameterizedTest
+    @ValueSource(strings = {"grid", "jittered", "sobol"})
+    void irradianceConvergesToTheAnalyticSolidAngleFormula(String samplerName) {
+        Sampler sampler = Sampler.create(samplerName, 1);
+        try {
+            assertConverges(sampler);
+        } finally {
+            TraceContext.current(new Scene()).sample.start(Sampler.create("grid", 1), 0, 0, 0);   // as outside a render
+        }
+    }
+
+    private static void assertConverges(Sampler sampler) {
         double w = 2, d = 1.5, h = 1.2, area = w * d;
         int[] ns = {1, 2, 4, 8, 16, 32, 64};
         double[] rms = new double[ns.length];
@@ -82,7 +101,7 @@ class AreaLightTest {
                 points++;
                 double exact = 10 / area * solidAngle(-w / 2 - x, w / 2 - x, -d / 2 - z, d / 2 - z, h);
                 for (int i = 0; i < ns.length; i++) {
-                    double e = irradiance(light(w, d, h, ns[i]), floorAt(x, z)) / exact - 1;
+                    double e = irradiance(light(w, d, h, ns[i]), floorAt(x, z), sampler, points) / exact - 1;
                     rms[i] += e * e;
                 }
             }
@@ -90,7 +109,7 @@ class AreaLightTest {
         for (int i = 0; i < ns.length; i++) {
             rms[i] = Math.sqrt(rms[i] / points);
         }
-        String what = "RMS relative error for n = 1, 2, ..., 64: " + java.util.Arrays.toString(rms);
+        String what = sampler.name() + ": RMS relative error for n = 1, 2, ..., 64: " + java.util.Arrays.toString(rms);
         for (int i = 1; i < ns.length; i++) {
             assertTrue(rms[i] < rms[i - 1], what);
         }
@@ -163,12 +182,15 @@ class AreaLightTest {
         }
     }
 
-    /** A large area light: the same image on 1 and 3 threads, and soft, not hard, shadows (not a point light). */
+    /**
+     * A large area light, its points jittered in their cells by the jittered sampler: the same image on 1
+     * and 3 threads, and soft, not hard, shadows (not the point light).
+     */
     @Test
     void sameImageForAnyThreadCount() throws SceneFormatException {
         String light = "Light AreaLight\nVector3d position [2 3 1]\nVector3d edge1 [1.5 0 0]\nVector3d edge2 [0 0 1.5]\n"
                 + "Vector3d intensity [20 18 15]\nint samples 3\n";
-        Image one = render(SCENE + light, 1), three = render(SCENE + light, 3);
+        Image one = render("Sampler jittered\n" + SCENE + light, 1), three = render("Sampler jittered\n" + SCENE + light, 3);
         assertArrayEquals(one.rgb, three.rgb);
         double[] point = render(SCENE + "Light PointLight\nVector3d position [2 3 1]\nVector3d intensity [20 18 15]\n", 1).rgb;
         assertTrue(!java.util.Arrays.equals(point, one.rgb));
