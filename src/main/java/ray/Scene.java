@@ -1,6 +1,10 @@
 package ray;
 
 import java.util.ArrayList;
+import java.util.EnumSet;
+import java.util.IdentityHashMap;
+import java.util.Map;
+import java.util.Set;
 import java.util.List;
 import javax.vecmath.Vector3d;
 import ray.accel.Accelerator;
@@ -8,6 +12,8 @@ import ray.accel.Bvh;
 import ray.light.Light;
 import ray.light.LightSample;
 import ray.material.Material;
+import ray.plan.RenderPlan;
+import ray.plan.Skip;
 import ray.render.Image;
 import ray.render.Renderer;
 import ray.surface.Surface;
@@ -41,6 +47,10 @@ public class Scene {
     public List<Material> materials = new ArrayList<>();
 
     private volatile Accelerator accel;
+    private volatile RenderPlan plan;
+    private Set<Skip> skips = EnumSet.allOf(Skip.class);
+    /** The names objects were given in the scene file ({@code Material Diffuse red}), for messages and the plan. */
+    private final Map<Object, String> names = new IdentityHashMap<>();
 
     /**
      * Validates the objects, fixes the camera frame and builds the acceleration structure. Called by
@@ -54,7 +64,34 @@ public class Scene {
             camera.aspect = (double) width / height;
         }
         camera.init();
+        RenderPlan p = RenderPlan.derive(this, skips);
+        p.apply();
+        plan = p;
         accel = Bvh.build(surfaces, this);
+    }
+
+    /** The render plan of the last {@link #prepare()} (derived there, before the first ray). */
+    public RenderPlan plan() {
+        accelerator();
+        return plan;
+    }
+
+    /**
+     * Which of the plan's exact skips the next {@link #prepare()} makes (all by default); tests and
+     * {@code --plan}'s "without the plan" line turn them off. Takes effect at the next prepare.
+     */
+    public void planSkips(Set<Skip> s) {
+        skips = s.isEmpty() ? EnumSet.noneOf(Skip.class) : EnumSet.copyOf(s);
+    }
+
+    /** Records the name {@code o} has in the scene file. */
+    public void name(Object o, String name) {
+        names.put(o, name);
+    }
+
+    /** The name {@code o} has in the scene file, or null. */
+    public String nameOf(Object o) {
+        return names.get(o);
     }
 
     /** The acceleration structure, built on first use. */

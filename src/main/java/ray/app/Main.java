@@ -50,6 +50,15 @@ public final class Main implements Callable<Integer> {
     @Option(names = "--stats", description = "print parse, build, render and write times, rays by kind, peak memory and BVH size")
     boolean stats;
 
+    @Option(names = "--plan", description = "print each scene's render plan (effects, why, ray bounds, what the plan saves) without rendering")
+    boolean plan;
+
+    @Option(names = "--json", description = "with --plan or --stats: print JSON Lines on stdout instead, one object per scene (docs/json.md)")
+    boolean json;
+
+    @Option(names = "--allow-long", description = "render even a scene whose plan bounds it above 1e11 rays (refused otherwise)")
+    boolean allowLong;
+
     @Option(names = "--view", description = "open the viewer on the (first) scene instead of writing a PNG")
     boolean view;
 
@@ -213,6 +222,13 @@ public final class Main implements Callable<Integer> {
                 return 1;
             }
         }
+        if (json && !plan && !stats) {
+            err.println("raytracer: --json goes with --plan or --stats");
+            return 2;
+        }
+        if (plan) {
+            return ray.plan.PlanCommand.run(scenes, json, out, err);
+        }
         if (study) {
             if (scenes.isEmpty() || output != null) {
                 err.println("raytracer: --study takes scene files and no --output (see --help)");
@@ -270,6 +286,9 @@ public final class Main implements Callable<Integer> {
             err.println(w);
         }
         sampling.applyTo(scene);
+        if (!ray.plan.CostGate.check(scenePath.toString(), scene, allowLong, threads, quiet, err)) {
+            return false;
+        }
         long t1 = System.nanoTime();
         Renderer renderer = new Renderer(scene).threads(threads);
         ProgressLine progress = !quiet && err == System.err && System.console() != null
@@ -306,7 +325,9 @@ public final class Main implements Callable<Integer> {
                     + "x" + scene.samplesPerPixel + " AA, " + fixed(t3 - t0, 2) + " s)");
             SamplingOptions.report(out, renderer.summary());
         }
-        if (stats) {
+        if (stats && json) {
+            out.println(StatsJson.line(scenePath, png, scene, renderer.stats(), new long[] {t0, t1, t2, t3}));
+        } else if (stats) {
             long build = scene.accelerator() instanceof Bvh b ? b.buildNanos() : 0;
             String bvh = scene.accelerator() instanceof Bvh b && b.primitiveCount() > 0
                     ? "; BVH " + fixed(Math.round(1e9 * b.memoryBytes() / b.primitiveCount()), 1) + " bytes/primitive" : "";

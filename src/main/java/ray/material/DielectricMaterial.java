@@ -60,6 +60,12 @@ public class DielectricMaterial extends Material {
         return shadeWithContext(ray, record, scene);
     }
 
+    /** For the render plan: at most one mirror and one refraction ray per hit, no light evaluated. */
+    @Override
+    public java.util.Set<ray.plan.Term> terms() {
+        return java.util.EnumSet.of(ray.plan.Term.MIRROR, ray.plan.Term.REFRACTION);
+    }
+
     @Override
     public void shade(Ray ray, IntersectionRecord rec, Scene scene, TraceContext ctx, Vector3d out) {
         Vector3d d = ray.direction, n = rec.normal;

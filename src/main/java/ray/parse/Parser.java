@@ -268,6 +268,7 @@ public final class Parser {
         if (name != null) {
             named.put(name, o);
             namedLines.put(name, line);
+            scene.name(o, name);
         }
     }
 
