@@ -96,6 +96,18 @@ public class AreaLight extends Light {
         return PointLight.finite(out.intensity);
     }
 
+    /** For the render plan (declared here, where {@link #sample} is): dark when I = 0. */
+    @Override
+    public boolean isDark() {
+        return intensity.x == 0 && intensity.y == 0 && intensity.z == 0;
+    }
+
+    /** For the render plan: one shadow ray per sample, n^2 per shading point. */
+    @Override
+    public int shadowRaysPerPoint() {
+        return samples * samples;
+    }
+
     @Override
     public String toString() {
         return "AreaLight[position " + position + ", edge1 " + edge1 + ", edge2 " + edge2 + ", intensity " + intensity
