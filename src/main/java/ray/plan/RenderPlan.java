@@ -53,10 +53,13 @@ public final class RenderPlan {
             evaluated.add(l);
         }
         lights = evaluated.toArray(new Light[0]);
-        for (Surface s : scene.surfaces) {
+        java.util.ArrayDeque<Surface> parts = new java.util.ArrayDeque<>(scene.surfaces);
+        while (!parts.isEmpty()) {   // a CSG's operands shade its hits with their own materials
+            Surface s = parts.pop();
             if (s.material != null) {
                 used.computeIfAbsent(s.material, m -> Shading.of(m, this.skips));
             }
+            parts.addAll(s.operands());
         }
         materials = new LinkedHashSet<>(used.keySet());
         materials.addAll(scene.materials);
