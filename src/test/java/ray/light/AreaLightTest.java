@@ -2,7 +2,6 @@ package ray.light;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
@@ -16,6 +15,7 @@ import ray.RayKind;
 import ray.Scene;
 import ray.TraceContext;
 import ray.parse.Parser;
+import ray.parse.ObjectErrors;
 import ray.parse.SceneFormatException;
 import ray.render.Image;
 import ray.render.Renderer;
@@ -133,32 +133,6 @@ class AreaLightTest {
         }
     }
 
-    static final String SCENE = """
-            Width 40
-            Height 30
-            AmbientLight [0.1 0.1 0.1]
-
-            Camera Camera
-            Vector3d eye [0 2 6]
-            Vector3d target [0 0 0]
-
-            Material BlinnPhong shiny
-            Vector3d ambientColor [0.2 0.1 0.1]
-            Vector3d diffuseColor [0.7 0.3 0.2]
-
-            Surface Sphere
-            Vector3d center [0 0 0]
-            double radius 1
-            ref material shiny
-
-            Surface Triangle
-            Vector3d v0 [-10 -1 -10]
-            Vector3d v1 [0 -1 10]
-            Vector3d v2 [10 -1 -10]
-            ref material shiny
-
-            """;
-
     static Image render(String text, int threads) throws SceneFormatException {
         return new Renderer(Parser.parse(text, "area.txt", new ArrayList<>())).threads(threads).render();
     }
@@ -171,9 +145,9 @@ class AreaLightTest {
     @Test
     void areaLightShrunkToAPointRendersAsThePointLight() throws SceneFormatException {
         String at = "Vector3d position [2 3 1]\nVector3d intensity [20 18 15]\n";
-        double[] point = render(SCENE + "Light PointLight\n" + at, 2).rgb;
+        double[] point = render(SpotLightTest.SCENE + "Light PointLight\n" + at, 2).rgb;
         for (String size : new String[] {"0", "1e-7"}) {
-            double[] area = render(SCENE + "Light AreaLight\n" + at + "Vector3d edge1 [" + size + " 0 0]\nVector3d edge2 [0 "
+            double[] area = render(SpotLightTest.SCENE + "Light AreaLight\n" + at + "Vector3d edge1 [" + size + " 0 0]\nVector3d edge2 [0 "
                     + size + " " + size + "]\n", 2).rgb;
             double tolerance = size.equals("0") ? 1e-13 : 1e-6;
             for (int i = 0; i < point.length; i++) {
@@ -190,9 +164,9 @@ class AreaLightTest {
     void sameImageForAnyThreadCount() throws SceneFormatException {
         String light = "Light AreaLight\nVector3d position [2 3 1]\nVector3d edge1 [1.5 0 0]\nVector3d edge2 [0 0 1.5]\n"
                 + "Vector3d intensity [20 18 15]\nint samples 3\n";
-        Image one = render("Sampler jittered\n" + SCENE + light, 1), three = render("Sampler jittered\n" + SCENE + light, 3);
+        Image one = render("Sampler jittered\n" + SpotLightTest.SCENE + light, 1), three = render("Sampler jittered\n" + SpotLightTest.SCENE + light, 3);
         assertArrayEquals(one.rgb, three.rgb);
-        double[] point = render(SCENE + "Light PointLight\nVector3d position [2 3 1]\nVector3d intensity [20 18 15]\n", 1).rgb;
+        double[] point = render(SpotLightTest.SCENE + "Light PointLight\nVector3d position [2 3 1]\nVector3d intensity [20 18 15]\n", 1).rgb;
         assertTrue(!java.util.Arrays.equals(point, one.rgb));
     }
 
@@ -232,10 +206,7 @@ class AreaLightTest {
                 {"int samples 65", "samples must be from 1 to 64"},
         };
         for (String[] c : cases) {
-            String text = "Width 1\nHeight 1\n\nCamera Camera\n\nLight AreaLight\n" + c[0] + "\n";
-            SceneFormatException e = assertThrows(SceneFormatException.class, () -> Parser.parse(text, "bad.txt", new ArrayList<>()));
-            assertTrue(e.getMessage().startsWith("bad.txt:6: Light AreaLight: "), e.getMessage());
-            assertTrue(e.getMessage().contains(c[1]), e.getMessage());
+            ObjectErrors.assertRefused("Light AreaLight", c[0], c[1]);
         }
     }
 }
