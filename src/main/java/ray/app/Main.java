@@ -191,7 +191,10 @@ public final class Main implements Callable<Integer> {
             return 2;
         }
         if (plan) {
-            return ray.plan.PlanCommand.run(scenes, json, cutFaint, out, err);
+            return ray.plan.PlanCommand.run(scenes, json, scene -> {
+                sampling.applyTo(scene);
+                scene.planCutFaint(cutFaint);
+            }, out, err);
         }
         if (study) {
             if (scenes.isEmpty() || output != null) {
@@ -285,7 +288,7 @@ public final class Main implements Callable<Integer> {
         }
         long t3 = System.nanoTime();
         // plain concatenation, not printf: java.util.Formatter's first use loads locale data (~20 ms)
-        if (!quiet) {
+        if (!quiet && !json) {   // with --json, stdout holds JSON Lines only
             out.println(scenePath + " -> " + png + " (" + scene.width + "x" + scene.height + ", " + scene.samplesPerPixel
                     + "x" + scene.samplesPerPixel + " AA, " + fixed(t3 - t0, 2) + " s)");
             SamplingOptions.report(out, renderer.summary());
