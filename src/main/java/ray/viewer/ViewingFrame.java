@@ -1,9 +1,12 @@
 package ray.viewer;
 
+import java.awt.AWTError;
 import java.awt.BorderLayout;
 import java.awt.Color;
 import java.awt.Dimension;
 import java.awt.GraphicsConfiguration;
+import java.awt.GraphicsEnvironment;
+import java.awt.HeadlessException;
 import java.awt.Insets;
 import java.awt.Rectangle;
 import java.awt.Toolkit;
@@ -12,6 +15,7 @@ import java.awt.datatransfer.DataFlavor;
 import java.awt.event.WindowAdapter;
 import java.awt.event.WindowEvent;
 import java.io.File;
+import java.lang.reflect.InvocationTargetException;
 import java.nio.file.Path;
 import java.util.List;
 import javax.swing.BorderFactory;
@@ -80,16 +84,41 @@ public final class ViewingFrame extends JFrame {
         updateActions();
     }
 
-    /** Opens a viewer window (on the Swing thread), rendering {@code scene} if it is not null. */
-    public static void open(Path scene) {
-        SwingUtilities.invokeLater(() -> {
-            LookAndFeels.install();
-            ViewingFrame f = new ViewingFrame();
-            f.setVisible(true);
-            if (scene != null) {
-                f.load(scene);
+    /**
+     * Opens a viewer window, rendering {@code scene} if it is not null, and returns once it is shown
+     * (the render goes on in the background). Throws {@link HeadlessException} with a one-line reason
+     * when there is no display to open it on: none configured, or one that cannot be reached.
+     */
+    public static void open(Path scene) throws HeadlessException {
+        if (GraphicsEnvironment.isHeadless()) {
+            throw new HeadlessException("no display");
+        }
+        try {
+            GraphicsEnvironment.getLocalGraphicsEnvironment().getScreenDevices();   // connects to the display
+            SwingUtilities.invokeAndWait(() -> {
+                LookAndFeels.install();
+                ViewingFrame f = new ViewingFrame();
+                f.setVisible(true);
+                if (scene != null) {
+                    f.load(scene);
+                }
+            });
+        } catch (InvocationTargetException e) {
+            Throwable cause = e.getCause();
+            if (cause instanceof HeadlessException || cause instanceof AWTError || cause instanceof InternalError) {
+                throw noDisplay(cause);
             }
-        });
+            throw cause instanceof RuntimeException r ? r : new IllegalStateException(cause);
+        } catch (AWTError | InternalError e) {
+            throw noDisplay(e);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    private static HeadlessException noDisplay(Throwable e) {
+        String why = e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
+        return new HeadlessException(Failures.oneLine("cannot open the display (" + why + ")"));
     }
 
     /** Closes every viewer window; the process then ends. */
