@@ -18,6 +18,8 @@ import java.io.File;
 import java.lang.reflect.InvocationTargetException;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
 import javax.swing.BorderFactory;
 import javax.swing.JFrame;
 import javax.swing.JLabel;
@@ -44,7 +46,14 @@ public final class ViewingFrame extends JFrame {
     private final JLabel status = new JLabel("Open a scene file: File > Open (Ctrl+O), or drop one here.");
     private final JTextArea error = new JTextArea();
     private final transient RenderSession session;
-    private final transient RecentFiles recent = RecentFiles.user();
+    /** The recent files, used on {@link #BACKGROUND} only (created there: the preferences' first use is slow). */
+    private transient RecentFiles recent;
+    /** Where the preferences are written: off the event thread (the first write loads an XML writer). */
+    private static final ExecutorService BACKGROUND = Executors.newSingleThreadExecutor(r -> {
+        Thread t = new Thread(r, "viewer-prefs");
+        t.setDaemon(true);
+        return t;
+    });
     private final transient FileWatch watch = new FileWatch();
     private final transient ViewerMenus menus;
     private final Timer ticker;
@@ -57,7 +66,7 @@ public final class ViewingFrame extends JFrame {
         menus = new ViewerMenus(this);
         setJMenuBar(menus.bar());
         menus.bindExtraKeys(getRootPane());
-        menus.recentFiles(recent.list());
+        updateRecent(null);
         error.setEditable(false);
         error.setLineWrap(true);
         error.setWrapStyleWord(true);
@@ -137,8 +146,27 @@ public final class ViewingFrame extends JFrame {
             watch.watch(file);
         }
         session.open(file);
-        recent.add(file);
-        menus.recentFiles(recent.list());
+        updateRecent(file);
+    }
+
+    /** Puts {@code file} (if not null) first in the recent files and rebuilds the menu; the store's work in the background. */
+    private void updateRecent(Path file) {
+        BACKGROUND.execute(() -> {
+            if (recent == null) {
+                recent = RecentFiles.user();
+            }
+            if (file != null) {
+                recent.add(file);
+            }
+            List<Path> l = recent.list();
+            SwingUtilities.invokeLater(() -> menus.recentFiles(l));
+        });
+    }
+
+    /** Close window: the render stops first, so closing does not wait for busy processors. */
+    void close() {
+        session.stop();
+        dispose();
     }
 
     void chooseScene() {
@@ -258,7 +286,7 @@ public final class ViewingFrame extends JFrame {
                     setTitle(TITLE + " - " + back.file().getFileName());
                 }
             } else if (job.state() == RenderJob.State.DONE) {
-                view.repaint();
+                view.show(job.image());            // exactly the finished image, whatever the tiles showed
                 for (String w : job.warnings()) {
                     System.err.println(w);
                 }
@@ -296,6 +324,11 @@ public final class ViewingFrame extends JFrame {
 
     /** Closing the window stops its work at once; the last window's closing ends the process. */
     private final class Closing extends WindowAdapter {
+        @Override
+        public void windowClosing(WindowEvent e) {
+            session.stop();
+        }
+
         @Override
         public void windowOpened(WindowEvent e) {
             openWindows++;

@@ -31,7 +31,8 @@ import ray.app.Main;
 /**
  * The viewer as a user meets it, on a throw-away X server (Xvfb), driven from outside by xdotool and
  * photographed by ImageMagick's {@code import}: the window shows exactly the command line's pixels,
- * saving over an existing file happens only after "Replace", and closing the window in the middle of
+ * saving over an existing file happens only after "Replace", watch mode renders a scene changed on
+ * disk, and closing the window in the middle of
  * a long render ends the process at once. Run by the {@code viewerTest} task (tag {@code xvfb}), which
  * {@code gradle test} runs too; skipped with a message where Xvfb, xdotool or ImageMagick are not
  * installed, unless {@code RAYTRACER_REQUIRE_XVFB} is set (CI sets it), where that is a failure.
@@ -134,6 +135,17 @@ class ViewerXvfbTest {
                 assertEquals(List.of("cli.png", "scene.png", "scene.txt"), files.map(p -> p.getFileName().toString()).sorted().toList(),
                         "no temporary file left");
             }
+
+            // watch mode: the scene changed on disk is rendered again, by itself
+            focus(window);
+            key("ctrl+shift+w");
+            Thread.sleep(700);                                   // the watch starts from the file as it is now
+            Path edited = Files.createDirectories(work.resolve("edited"));
+            String greener = Files.readString(scene).replace("BGColor [0.1 0.2 0.3]", "BGColor [0.1 0.6 0.3]");
+            assertEquals(0, Main.run(new PrintStream(new ByteArrayOutputStream()), new PrintStream(err),
+                    Files.writeString(edited.resolve("scene.txt"), greener).toString(), "-o", edited.resolve("cli.png").toString()), err::toString);
+            Files.writeString(scene, greener);
+            waitForImage(ImageIO.read(edited.resolve("cli.png").toFile()), viewer);
 
             focus(window);
             key("ctrl+q");
