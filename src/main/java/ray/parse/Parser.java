@@ -531,10 +531,12 @@ public final class Parser {
         long pixels = (long) scene.width * scene.height;
         if (pixels > Limits.maxPixels()) {
             line = globalLines.get("Width");
-            String why = Limits.maxPixels() < Limits.heapPixels()
-                    ? String.format("at most %,d pixels, the most one image array holds", Limits.MAX_ARRAY_PIXELS)
-                    : String.format("at most %,d pixels, half of this JVM's %,d MiB heap at %d bytes a pixel; raise the heap with -Xmx, "
-                            + "e.g. JAVA_OPTS=-Xmx16g", Limits.maxPixels(), Runtime.getRuntime().maxMemory() >> 20, Limits.BYTES_PER_PIXEL);
+            // no heap helps beyond what one array can index: advise -Xmx only where it would be enough
+            String why = pixels > Limits.MAX_ARRAY_PIXELS
+                    ? String.format("at most %,d pixels, the most one image array holds whatever the heap", Limits.MAX_ARRAY_PIXELS)
+                    : String.format("at most %,d pixels, half of this JVM's %,d MiB heap at %d bytes a pixel; raise the heap, "
+                            + "e.g. JAVA_OPTS=-Xmx%dg", Limits.maxPixels(), Runtime.getRuntime().maxMemory() >> 20, Limits.BYTES_PER_PIXEL,
+                            Limits.heapGigabytesFor(pixels));
             throw error(String.format("Width %d x Height %d = %,d pixels would need about %,d MiB (expected %s)",
                     scene.width, scene.height, pixels, pixels * Limits.BYTES_PER_PIXEL >> 20, why));
         }

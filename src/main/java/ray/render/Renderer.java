@@ -145,17 +145,20 @@ public final class Renderer {
         for (TraceContext ctx : contexts) {
             stats.add(ctx.stats);
         }
-        if (failure[0] instanceof RuntimeException) {
-            throw (RuntimeException) failure[0];
-        } else if (failure[0] instanceof Error) {
-            throw (Error) failure[0];
-        } else if (failure[0] != null) {
-            throw new IllegalStateException(failure[0]);
+        if (failure[0] != null) {
+            // rethrown as itself, even a checked exception a user's class threw sneakily: wrapping it
+            // would hide its class and call its (user-written) getMessage() here
+            throw Renderer.<RuntimeException>sneaky(failure[0]);
         }
         if (cancelled) {
             throw new RenderCancelledException();
         }
         return image;
+    }
+
+    @SuppressWarnings("unchecked")
+    private static <T extends Throwable> T sneaky(Throwable t) throws T {
+        throw (T) t;
     }
 
     /** The mean of pixel (x, y)'s n_s x n_s samples, written into {@code out}. */

@@ -72,7 +72,7 @@ class MainBadInputTest {
         Run r = run(scene.toString());
         assertEquals(1, r.status());
         assertEquals(1, r.errLines().size(), r.err());
-        assertTrue(r.err().startsWith(scene + ":1: ") && r.err().contains("-Xmx"), r.err());
+        assertTrue(r.err().startsWith(scene + ":1: ") && r.err().contains("whatever the heap") && !r.err().contains("-Xmx"), r.err());
         assertArrayEquals(oldPng(), Files.readAllBytes(png));
     }
 
