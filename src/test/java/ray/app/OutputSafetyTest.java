@@ -118,19 +118,22 @@ class OutputSafetyTest {
     void outputOntoAFifoIsWrittenIntoNotReplaced() throws Exception {
         Path scene = write("a.txt", GOOD), fifo = dir.resolve("pipe");
         assumeTrue(exec("mkfifo", fifo.toString()), "mkfifo is needed");
-        CompletableFuture<byte[]> reader = CompletableFuture.supplyAsync(() -> {
+        CompletableFuture<byte[]> reader = new CompletableFuture<>();
+        Thread t = new Thread(() -> {
             try (InputStream in = Files.newInputStream(fifo)) {
-                return in.readAllBytes();
+                reader.complete(in.readAllBytes());
             } catch (IOException e) {
-                throw new RuntimeException(e);
+                reader.completeExceptionally(e);
             }
         });
+        t.setDaemon(true);      // if the FIFO were replaced, this open would wait forever for a writer
+        t.start();
         Run r = assertTimeoutPreemptively(Duration.ofSeconds(20), () -> run("-q", "-o", fifo.toString(), scene.toString()));
         assertEquals(0, r.status(), r.err());
-        byte[] png = reader.get();
+        assertEquals("a FIFO", ray.render.PngWriter.kind(fifo), "still a FIFO");
+        byte[] png = reader.get(20, java.util.concurrent.TimeUnit.SECONDS);
         assertEquals((byte) 0x89, png[0]);
         assertEquals('P', png[1]);
-        assertEquals("a FIFO", ray.render.PngWriter.kind(fifo));
         assertFalse(Files.isRegularFile(fifo));
     }
 
