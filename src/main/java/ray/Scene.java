@@ -1,6 +1,10 @@
 package ray;
 
 import java.util.ArrayList;
+import java.util.EnumSet;
+import java.util.IdentityHashMap;
+import java.util.Map;
+import java.util.Set;
 import java.util.List;
 import javax.vecmath.Vector3d;
 import ray.accel.Accelerator;
@@ -8,6 +12,8 @@ import ray.accel.Bvh;
 import ray.light.Light;
 import ray.light.LightSample;
 import ray.material.Material;
+import ray.plan.RenderPlan;
+import ray.plan.Skip;
 import ray.render.Image;
 import ray.render.Renderer;
 import ray.surface.Surface;
@@ -30,6 +36,10 @@ public class Scene {
     public int height;
     /** n_s: each pixel is the mean of n_s x n_s samples. */
     public int samplesPerPixel = 1;
+    /** The scene's {@code Sampler} global: one of {@code ray.render.Sampler.NAMES} (grid, the default). */
+    public String sampler = "grid";
+    /** The scene's {@code TargetError} global: the adaptive sampler's target, in 8-bit steps. */
+    public double targetError = 0.5;
     /** Mirror bounces followed (0: the bases of glazed materials only). */
     public int maxDepth = 10;
     public List<Surface> surfaces = new ArrayList<>();
@@ -37,6 +47,10 @@ public class Scene {
     public List<Material> materials = new ArrayList<>();
 
     private volatile Accelerator accel;
+    private volatile RenderPlan plan;
+    private Set<Skip> skips = EnumSet.allOf(Skip.class);
+    /** The names objects were given in the scene file ({@code Material Diffuse red}), for messages and the plan. */
+    private final Map<Object, String> names = new IdentityHashMap<>();
 
     /**
      * Validates the objects, fixes the camera frame and builds the acceleration structure. Called by
@@ -50,7 +64,34 @@ public class Scene {
             camera.aspect = (double) width / height;
         }
         camera.init();
+        RenderPlan p = RenderPlan.derive(this, skips);
+        p.apply();
+        plan = p;
         accel = Bvh.build(surfaces, this);
+    }
+
+    /** The render plan of the last {@link #prepare()} (derived there, before the first ray). */
+    public RenderPlan plan() {
+        accelerator();
+        return plan;
+    }
+
+    /**
+     * Which of the plan's exact skips the next {@link #prepare()} makes (all by default); tests and
+     * {@code --plan}'s "without the plan" line turn them off. Takes effect at the next prepare.
+     */
+    public void planSkips(Set<Skip> s) {
+        skips = s.isEmpty() ? EnumSet.noneOf(Skip.class) : EnumSet.copyOf(s);
+    }
+
+    /** Records the name {@code o} has in the scene file. */
+    public void name(Object o, String name) {
+        names.put(o, name);
+    }
+
+    /** The name {@code o} has in the scene file, or null. */
+    public String nameOf(Object o) {
+        return names.get(o);
     }
 
     /** The acceleration structure, built on first use. */
@@ -76,13 +117,18 @@ public class Scene {
         return out;
     }
 
-    /** The colour seen along {@code ray}: the hit surface's material, or {@code BGColor} where nothing is hit. */
+    // ---- the ray-query layer: every ray is cast, and counted by its RayKind, in one of these ----
+
+    /**
+     * The colour seen along {@code ray}: the hit surface's material, or {@code BGColor} where nothing is
+     * hit. This is the framework's method for a user's own classes; its rays count as {@link RayKind#USER}.
+     */
     public Vector3d trace(Ray ray) {
         TraceContext ctx = TraceContext.current(this);
         Vector3d out = new Vector3d();
         int depth = Math.max(ray.depth, ctx.level);
         if (depth > maxDepth) {
-            return out;   // a user material recursing past MaxDepth: not followed, black
+            return out;   // a user material recursing past MaxDepth: not followed (not cast), black
         }
         Ray r = new Ray();
         r.origin.set(ray.origin);
@@ -90,12 +136,57 @@ public class Scene {
         r.tMin = ray.tMin;
         r.tMax = ray.tMax;
         r.depth = depth;
-        traceInto(r, ctx, out);
+        ctx.stats.count(RayKind.USER);
+        shadeClosest(r, ctx, out);
         return out;
     }
 
-    /** Allocation-free {@link #trace}: writes the colour into {@code out}. */
-    public void traceInto(Ray ray, TraceContext ctx, Vector3d out) {
+    /** A camera ray (one per sample, depth 0): its colour into {@code out}. Counted as {@link RayKind#CAMERA}. */
+    public void traceCamera(Ray ray, TraceContext ctx, Vector3d out) {
+        ctx.stats.count(RayKind.CAMERA);
+        shadeClosest(ray, ctx, out);
+    }
+
+    /**
+     * The ideal mirror reflection of {@code ray} at {@code rec} (r = d - 2 (d.n) n), cast one bounce deeper
+     * and counted as {@link RayKind#MIRROR}: the colour it sees, or null when the incoming ray is already
+     * at {@code MaxDepth} (nothing cast). The returned vector is {@code ctx}'s scratch for that depth: read
+     * it before casting the next ray of the same depth.
+     */
+    public Vector3d traceMirror(Ray ray, IntersectionRecord rec, TraceContext ctx) {
+        Vector3d d = ray.direction, n = rec.normal;
+        double dn = 2 * (d.x * n.x + d.y * n.y + d.z * n.z);
+        return traceSecondary(RayKind.MIRROR, ray, rec, d.x - dn * n.x, d.y - dn * n.y, d.z - dn * n.z, ctx);
+    }
+
+    /**
+     * A transmitted ray leaving {@code rec}'s point along (dx, dy, dz) (the refracted direction the
+     * material computed; the origin is offset to that side of the surface), cast one bounce deeper and
+     * counted as {@link RayKind#REFRACTION}. Returns what {@link #traceMirror} returns.
+     */
+    public Vector3d traceRefraction(Ray ray, IntersectionRecord rec, double dx, double dy, double dz, TraceContext ctx) {
+        return traceSecondary(RayKind.REFRACTION, ray, rec, dx, dy, dz, ctx);
+    }
+
+    private Vector3d traceSecondary(RayKind kind, Ray ray, IntersectionRecord rec, double dx, double dy, double dz,
+                                    TraceContext ctx) {
+        // inside framework-style material code, ctx.level is the depth of the rays it traces: one more
+        // than the ray it is shading (which may be a fresh Ray of depth 0 it made itself)
+        int depth = Math.max(ray.depth, ctx.level - 1);
+        if (depth >= maxDepth) {
+            return null;
+        }
+        Ray next = ctx.ray(depth + 1);
+        rec.spawnRay(dx, dy, dz, next);
+        next.depth = depth + 1;
+        Vector3d c = ctx.color(depth + 1);
+        ctx.stats.count(kind);
+        shadeClosest(next, ctx, c);
+        return c;
+    }
+
+    /** Shades the closest hit along {@code ray} into {@code out} (BGColor on a miss). Counts nothing. */
+    private void shadeClosest(Ray ray, TraceContext ctx, Vector3d out) {
         IntersectionRecord rec = ctx.record(ray.depth);
         if (!accelerator().closestHit(ray, rec, ctx)) {
             out.set(backgroundColor);
@@ -105,15 +196,20 @@ public class Scene {
         m.shade(ray, rec, this, ctx, out);
     }
 
-    /** The closest hit along {@code ray} within its span, written into {@code record}; false on a miss. */
+    /**
+     * The closest hit along {@code ray} within its span, written into {@code record}; false on a miss.
+     * Counted as {@link RayKind#USER} (built-in code never calls it).
+     */
     public boolean intersect(Ray ray, IntersectionRecord record) {
-        return accelerator().closestHit(ray, record, TraceContext.current(this));
+        TraceContext ctx = TraceContext.current(this);
+        ctx.stats.count(RayKind.USER);
+        return accelerator().closestHit(ray, record, ctx);
     }
 
-    /** True when anything lies on {@code ray} within its span (a shadow query). */
+    /** True when anything lies on {@code ray} within its span (a shadow query, counted as {@link RayKind#SHADOW}). */
     public boolean occluded(Ray ray) {
         TraceContext ctx = TraceContext.current(this);
-        ctx.stats.shadow++;
+        ctx.stats.count(RayKind.SHADOW);
         return accelerator().anyHit(ray, ctx);
     }
 
@@ -122,12 +218,12 @@ public class Scene {
         return occluded(record, sample, TraceContext.current(this));
     }
 
-    /** Allocation-free shadow query for a light sample, on {@code ctx}'s shadow ray. */
+    /** Allocation-free shadow query for a light sample, on {@code ctx}'s shadow ray ({@link RayKind#SHADOW}). */
     public boolean occluded(IntersectionRecord record, LightSample sample, TraceContext ctx) {
         Ray s = ctx.shadowRay;
         Vector3d p = sample.position;
         record.spawnRayTo(p.x, p.y, p.z, s);
-        ctx.stats.shadow++;
+        ctx.stats.count(RayKind.SHADOW);
         return accelerator().anyHit(s, ctx);
     }
 

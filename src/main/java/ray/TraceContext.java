@@ -20,6 +20,8 @@ public final class TraceContext {
     public final IntersectionRecord scratchRecord = new IntersectionRecord();
     public final LightSample lightSample = new LightSample();
     public final RayStats stats = new RayStats();
+    /** The pixel sample being traced: light and effect code draws its sampler dimensions here (no allocation). */
+    public final ray.render.PixelSample sample = new ray.render.PixelSample();
     /** BVH traversal stack (node indices); 64 levels is deeper than any SAH tree over 2^31 primitives. */
     public final int[] stack = new int[128];
     /** Entry distances of the subtrees on {@link #stack} (closest-hit traversal skips those beyond the hit). */

@@ -108,9 +108,16 @@ public final class Bvh implements Accelerator {
         return c == Triangle.class ? TRI : c == Sphere.class ? SPHERE : OTHER;
     }
 
-    /** Builds the BVH over {@code surfaces}, leaving out those that can never be hit. */
-    public static Bvh build(List<Surface> surfaces, Scene scene) {
+    /**
+     * Builds the BVH over the primitives of {@code sceneSurfaces} ({@link Surface#collectPrimitives}),
+     * leaving out those that can never be hit.
+     */
+    public static Bvh build(List<Surface> sceneSurfaces, Scene scene) {
         long t0 = System.nanoTime();
+        List<Surface> surfaces = new ArrayList<>(sceneSurfaces.size());
+        for (Surface s : sceneSurfaces) {
+            s.collectPrimitives(surfaces);
+        }
         List<Surface> bounded = new ArrayList<>(surfaces.size());
         List<Surface> unbounded = new ArrayList<>();
         double[] box = new double[6 * surfaces.size()];
@@ -327,21 +334,35 @@ public final class Bvh implements Accelerator {
     }
 
     /**
-     * A user surface's own test over [ray.tMin, best]; on a hit the record is filled and its normal
-     * made to face the ray. The ray's tMax is restored even if the surface throws.
+     * A user surface's own test over [ray.tMin, best]; on a hit the record is the one the surface filled
+     * ({@link #finishOther}), on a miss it is left as it was. The ray's tMax is restored even if the
+     * surface throws.
      */
     private boolean userHit(Surface s, Ray ray, double best, IntersectionRecord rec) {
-        double saved = ray.tMax;
+        double saved = ray.tMax, savedError = rec.error;
+        boolean savedFront = rec.frontFace;
+        Surface savedSurface = rec.surface;
+        // what a surface written against the framework alone does not set: unknown error bound, front
+        // face unless its normal says otherwise, and the surface itself
+        rec.error = 0;
+        rec.frontFace = true;
+        rec.surface = null;
         ray.tMax = best;
+        boolean hit = false;
         try {
-            if (!userIntersects(s, ray, rec)) {
-                return false;
-            }
+            hit = userIntersects(s, ray, rec);
         } finally {
             ray.tMax = saved;
+            if (!hit) {
+                rec.error = savedError;
+                rec.frontFace = savedFront;
+                rec.surface = savedSurface;
+            }
         }
-        finishOther(ray, rec, s);
-        return true;
+        if (hit) {
+            finishOther(ray, rec, s);
+        }
+        return hit;
     }
 
     /**
@@ -389,14 +410,20 @@ public final class Bvh implements Accelerator {
         return true;
     }
 
-    /** A user surface's record: make sure its normal faces the ray and its error bound is set. */
+    /**
+     * A user surface's record is kept as its author wrote it (t, point, frontFace, error bound, and the
+     * surface it names, {@code s} when it names none). Only a normal pointing away from the ray (a
+     * surface written against the framework alone, which returns the outward normal) is turned to face
+     * the ray, and then the ray is on the back side.
+     */
     private static void finishOther(Ray ray, IntersectionRecord rec, Surface s) {
-        rec.surface = s;
-        rec.error = 0;
+        if (rec.surface == null) {
+            rec.surface = s;
+        }
         double dn = rec.normal.x * ray.direction.x + rec.normal.y * ray.direction.y + rec.normal.z * ray.direction.z;
-        rec.frontFace = dn <= 0;
         if (dn > 0) {
             rec.normal.negate();
+            rec.frontFace = false;
         }
     }
 

@@ -51,11 +51,23 @@ public final class Main implements Callable<Integer> {
     @Option(names = {"-j", "--threads"}, paramLabel = "N", description = "render threads (default: all cores, ${DEFAULT-VALUE})")
     int threads = Runtime.getRuntime().availableProcessors();
 
+    @CommandLine.Mixin
+    SamplingOptions sampling = new SamplingOptions();
+
     @Option(names = {"-q", "--quiet"}, description = "print nothing but errors")
     boolean quiet;
 
     @Option(names = "--stats", description = "print parse, build, render and write times, rays by kind, peak memory and BVH size")
     boolean stats;
+
+    @Option(names = "--plan", description = "print each scene's render plan (effects, why, ray bounds, what the plan saves) without rendering")
+    boolean plan;
+
+    @Option(names = "--json", description = "with --plan or --stats: print JSON Lines on stdout instead, one object per scene (docs/json.md)")
+    boolean json;
+
+    @Option(names = "--allow-long", description = "render even a scene whose plan bounds it above 1e11 rays (refused otherwise)")
+    boolean allowLong;
 
     @Option(names = "--view", description = "open the viewer on the (first) scene instead of writing a PNG")
     boolean view;
@@ -81,6 +93,16 @@ public final class Main implements Callable<Integer> {
 
     @Option(names = "--bench-work", paramLabel = "DIR", description = "with --bench: where images, logs and generated scenes go (default: a raytracer-bench directory in the temporary directory)")
     Path benchWork;
+
+    @Option(names = "--study", description = "accuracy study: render each scene with every sampler and setting, time it and "
+            + "measure its error against a converged reference; report in --report-dir (default build/reports/accuracy)")
+    boolean study;
+
+    @Option(names = "--quick", description = "with --study: a smaller grid of settings (n_s up to 4)")
+    boolean quick;
+
+    @Option(names = "--report-dir", paramLabel = "DIR", description = "with --study: where the CSVs, plots and index.html go")
+    Path reportDir;
 
     private PrintStream out = System.out;
     private PrintStream err = System.err;
@@ -205,8 +227,27 @@ public final class Main implements Callable<Integer> {
             err.println("raytracer: --threads must be at least 1");
             return 2;
         }
+        if (sampling.problem() != null) {
+            err.println("raytracer: " + sampling.problem());
+            return 2;
+        }
         if (bench) {
             return bench();
+        }
+        if (json && !plan && !stats) {
+            err.println("raytracer: --json goes with --plan or --stats");
+            return 2;
+        }
+        if (plan) {
+            return ray.plan.PlanCommand.run(scenes, json, out, err);
+        }
+        if (study) {
+            if (scenes.isEmpty() || output != null) {
+                err.println("raytracer: --study takes scene files and no --output (see --help)");
+                return 2;
+            }
+            return ray.study.Study.run(scenes, quick, reportDir != null ? reportDir : Path.of("build", "reports", "accuracy"),
+                    threads, out, err, !this.quiet && System.console() != null);
         }
         if (scenes.isEmpty() || view) {
             return openViewer();

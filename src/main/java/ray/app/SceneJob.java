@@ -131,6 +131,14 @@ final class SceneJob {
         for (String w : warnings) {
             err.println(w);
         }
+        try {
+            main.sampling.applyTo(scene);
+            if (!ray.plan.CostGate.check(name, scene, main.allowLong, main.threads, main.quiet, err)) {
+                return false;
+            }
+        } catch (Throwable e) {       // the plan asks the scene's own classes about themselves
+            return fail(name + ": planning the render failed: " + Failures.describe(e));
+        }
         long t1 = System.nanoTime();
         Renderer renderer = new Renderer(scene).threads(main.threads);
         ProgressLine progress = !main.quiet && err == System.err && Terminal.stderr() ? new ProgressLine(err, name) : null;
@@ -172,8 +180,12 @@ final class SceneJob {
         if (!main.quiet) {
             summary.println(name + " -> " + target + " (" + scene.width + "x" + scene.height + ", " + scene.samplesPerPixel
                     + "x" + scene.samplesPerPixel + " AA, " + Main.fixed(t3 - t0, 2) + " s)");
+            SamplingOptions.report(summary, renderer.summary());
         }
-        if (main.stats) {
+        if (main.stats && main.json) {
+            summary.println(StatsJson.line(scenePath, target.stdout() ? Path.of("-") : target.path(), scene, renderer.stats(),
+                    new long[] {t0, t1, t2, t3}));
+        } else if (main.stats) {
             long build = scene.accelerator() instanceof Bvh b ? b.buildNanos() : 0;
             String bvh = scene.accelerator() instanceof Bvh b && b.primitiveCount() > 0
                     ? "; BVH " + Main.fixed(Math.round(1e9 * b.memoryBytes() / b.primitiveCount()), 1) + " bytes/primitive" : "";

@@ -41,4 +41,24 @@ public abstract class Light implements SceneObject {
         out.shadowTested = true;
         return true;
     }
+
+    /**
+     * For the render plan: true when this light adds nothing anywhere (zero intensity), so the plan
+     * skips it (no evaluation, no shadow ray). The default: false.
+     */
+    public boolean isDark() {
+        return false;
+    }
+
+    /**
+     * For the render plan: the most shadow rays one shading point can cost for this light (through
+     * {@code Scene.occluded}), or {@link #UNKNOWN_RAYS} (the default, a user's light whose
+     * {@code getIntensity} may trace anything).
+     */
+    public int shadowRaysPerPoint() {
+        return UNKNOWN_RAYS;
+    }
+
+    /** What {@link #shadowRaysPerPoint()} returns when the light cannot say. */
+    public static final int UNKNOWN_RAYS = -1;
 }

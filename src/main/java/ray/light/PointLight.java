@@ -55,6 +55,16 @@ public class PointLight extends Light {
         return finite(out.intensity);   // a light closer than ~1e-154 would overflow I / r^2
     }
 
+    @Override
+    public boolean isDark() {
+        return intensity.x == 0 && intensity.y == 0 && intensity.z == 0;
+    }
+
+    @Override
+    public int shadowRaysPerPoint() {
+        return 1;
+    }
+
     static boolean finite(Vector3d v) {
         return Double.isFinite(v.x) && Double.isFinite(v.y) && Double.isFinite(v.z);
     }

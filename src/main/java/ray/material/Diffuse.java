@@ -1,5 +1,7 @@
 package ray.material;
 
+import java.util.EnumSet;
+import java.util.Set;
 import javax.vecmath.Vector3d;
 import ray.IntersectionRecord;
 import ray.Ray;
@@ -7,6 +9,9 @@ import ray.Scene;
 import ray.TraceContext;
 import ray.light.Light;
 import ray.light.LightSample;
+import ray.plan.RenderPlan;
+import ray.plan.Skip;
+import ray.plan.Term;
 
 /**
  * Lambertian reflection with an ambient term:
@@ -35,17 +40,56 @@ public class Diffuse extends Material {
     }
 
     @Override
-    public void shade(Ray ray, IntersectionRecord rec, Scene scene, TraceContext ctx, Vector3d out) {
+    public Set<Term> terms() {
+        Set<Term> t = EnumSet.noneOf(Term.class);
+        if (!zero(ambientColor)) {
+            t.add(Term.AMBIENT);
+        }
+        if (!zero(diffuseColor)) {
+            t.add(Term.DIFFUSE);
+        }
+        Vector3d ks = specularColorOrNull();
+        if (ks != null && !zero(ks)) {
+            t.add(Term.HIGHLIGHT);
+        }
+        return t;
+    }
+
+    /** Caches k_a I_a and the lights to evaluate: none where the plan finds no direct term. */
+    @Override
+    public void planned(RenderPlan plan) {
+        Scene scene = plan.scene();
         Vector3d ia = scene.ambientLight;
-        double r = ambientColor.x * ia.x, g = ambientColor.y * ia.y, b = ambientColor.z * ia.z;
+        ambient = new double[] {ambientColor.x * ia.x, ambientColor.y * ia.y, ambientColor.z * ia.z};
+        lights = plan.skipping(Skip.NO_DIRECT_TERM) && !Term.direct(terms()) ? new Light[0] : plan.lights();
+        plannedFor = scene;
+    }
+
+    /** The scene {@link #planned} last ran for, and what it cached (k_a I_a, the lights to evaluate). */
+    private Scene plannedFor;
+    private double[] ambient;
+    private Light[] lights;
+
+    @Override
+    public void shade(Ray ray, IntersectionRecord rec, Scene scene, TraceContext ctx, Vector3d out) {
+        double r, g, b;
+        Light[] ls;
+        if (plannedFor == scene) {
+            r = ambient[0];
+            g = ambient[1];
+            b = ambient[2];
+            ls = lights;
+        } else {   // shaded outside a planned render (a unit test, a hand-made scene): every light
+            Vector3d ia = scene.ambientLight;
+            r = ambientColor.x * ia.x;
+            g = ambientColor.y * ia.y;
+            b = ambientColor.z * ia.z;
+            ls = scene.lights.toArray(new Light[0]);
+        }
         Vector3d n = rec.normal;
         LightSample s = ctx.lightSample;
         Vector3d ks = specularColorOrNull();   // null: no highlight term at all (plain Diffuse)
-        java.util.List<Light> lights = scene.lights;
-        // an index loop: a for-each would allocate an Iterator per shading point wherever the JIT does
-        // not remove it (C1, the launcher's compiler, has no escape analysis)
-        for (int k = 0, lightCount = lights.size(); k < lightCount; k++) {
-            Light light = lights.get(k);
+        for (Light light : ls) {
             for (int i = 0, count = light.sampleCount(); i < count; i++) {
                 if (!light.sample(rec, scene, i, s)) {
                     continue;
@@ -71,6 +115,10 @@ public class Diffuse extends Material {
             }
         }
         out.set(r, g, b);
+    }
+
+    static boolean zero(Vector3d c) {
+        return c.x == 0 && c.y == 0 && c.z == 0;
     }
 
     /** Specular factor for the light direction l (0 for a pure diffuse material). */

@@ -1,10 +1,17 @@
 package ray.material;
 
+import java.util.ArrayList;
+import java.util.EnumSet;
+import java.util.List;
+import java.util.Set;
 import javax.vecmath.Vector3d;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.Scene;
 import ray.TraceContext;
+import ray.plan.RenderPlan;
+import ray.plan.Skip;
+import ray.plan.Term;
 
 /**
  * A glazed surface: a base material plus an ideal mirror reflection,
@@ -38,31 +45,80 @@ public class GlazedMaterial extends Material {
         return shadeWithContext(ray, record, scene);
     }
 
+    /** The base's terms and, where some level of the chain reflects, one mirror ray per hit. */
+    @Override
+    public Set<Term> terms() {
+        Set<Term> t = EnumSet.noneOf(Term.class);
+        t.addAll(RenderPlan.termsOf(base));
+        if (mirrorCoefficient != 0) {
+            t.add(Term.MIRROR);
+        }
+        return t;
+    }
+
+    /**
+     * The Glazed materials from this one down its chain of bases that are plain GlazedMaterials
+     * (outermost first; a subclass, which may shade its own way, ends the chain, as does a loop).
+     */
+    public List<GlazedMaterial> chain() {
+        List<GlazedMaterial> levels = new ArrayList<>();
+        for (GlazedMaterial g = this; g != null && !levels.contains(g);
+                g = g.base != null && g.base.getClass() == GlazedMaterial.class ? (GlazedMaterial) g.base : null) {
+            levels.add(g);
+        }
+        return levels;
+    }
+
+    /**
+     * Folds the chain of Glazed bases: each level's shade would add k_i times the same mirror ray's
+     * colour (same point, same direction, same depth) after its base's value, so one ray and the
+     * coefficients added in that order (innermost first) give the unfolded sums bit for bit.
+     */
+    @Override
+    public void planned(RenderPlan plan) {
+        List<GlazedMaterial> levels = plan.skipping(Skip.FOLD_GLAZED) ? chain() : List.of(this);
+        boolean skipZero = plan.skipping(Skip.ZERO_MIRROR);
+        double[] ks = new double[levels.size()];
+        int n = 0;
+        for (int i = levels.size() - 1; i >= 0; i--) {
+            double k = levels.get(i).mirrorCoefficient;
+            if (k != 0 || !skipZero) {
+                ks[n++] = k;
+            }
+        }
+        coefficients = java.util.Arrays.copyOf(ks, n);
+        foldedBase = levels.get(levels.size() - 1).base;
+        plannedFor = plan.scene();
+    }
+
+    /** The scene {@link #planned} last ran for, the base at the bottom of the folded chain and its coefficients. */
+    private Scene plannedFor;
+    private Material foldedBase;
+    private double[] coefficients;
+
     @Override
     public void shade(Ray ray, IntersectionRecord rec, Scene scene, TraceContext ctx, Vector3d out) {
-        if (base != null) {
-            base.shade(ray, rec, scene, ctx, out);
+        boolean planned = plannedFor == scene;
+        Material b = planned ? foldedBase : base;
+        int mirrors = planned ? coefficients.length : mirrorCoefficient == 0 ? 0 : 1;
+        if (b != null) {
+            b.shade(ray, rec, scene, ctx, out);
         } else {
             out.set(0, 0, 0);
         }
-        // inside framework-style material code, ctx.level is the depth of the rays it traces: one more
-        // than the ray it is shading (which may be a fresh Ray of depth 0 it made itself)
-        int depth = Math.max(ray.depth, ctx.level - 1);
-        if (mirrorCoefficient == 0 || depth >= scene.maxDepth) {
+        if (mirrors == 0) {
             return;
         }
-        // mirror direction r = d - 2 (d.n) n
-        Vector3d d = ray.direction, n = rec.normal;
-        double dn = 2 * (d.x * n.x + d.y * n.y + d.z * n.z);
-        Ray mirror = ctx.ray(depth + 1);
-        rec.spawnRay(d.x - dn * n.x, d.y - dn * n.y, d.z - dn * n.z, mirror);
-        mirror.depth = depth + 1;
-        Vector3d c = ctx.color(depth + 1);
-        ctx.stats.mirror++;
-        scene.traceInto(mirror, ctx, c);
-        out.x += mirrorCoefficient * c.x;
-        out.y += mirrorCoefficient * c.y;
-        out.z += mirrorCoefficient * c.z;
+        Vector3d c = scene.traceMirror(ray, rec, ctx);   // null past MaxDepth: adds nothing
+        if (c == null) {
+            return;
+        }
+        for (int i = 0; i < mirrors; i++) {   // innermost level first, as the unfolded shades add them
+            double k = planned ? coefficients[i] : mirrorCoefficient;
+            out.x += k * c.x;
+            out.y += k * c.y;
+            out.z += k * c.z;
+        }
     }
 
     @Override

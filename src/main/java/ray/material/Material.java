@@ -1,11 +1,15 @@
 package ray.material;
 
+import java.util.EnumSet;
+import java.util.Set;
 import javax.vecmath.Vector3d;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.Scene;
 import ray.SceneObject;
 import ray.TraceContext;
+import ray.plan.RenderPlan;
+import ray.plan.Term;
 
 /**
  * How a surface reflects light. The framework's contract is {@link #shade}: the colour leaving
@@ -39,6 +43,22 @@ public abstract class Material implements SceneObject {
         } finally {
             ctx.level = saved;
         }
+    }
+
+    /**
+     * The terms this material's shading has, for the render plan (read once per render, before the
+     * first ray). Declare only terms that can be non-zero for this object's field values. The default,
+     * for a user's class the plan knows nothing about: every term, rays of its own included.
+     */
+    public Set<Term> terms() {
+        return EnumSet.allOf(Term.class);
+    }
+
+    /**
+     * Called once per render after the plan is derived and before the first ray: a built-in material
+     * caches what the plan lets it skip. The default does nothing.
+     */
+    public void planned(RenderPlan plan) {
     }
 
     /** Framework form of the fast path, for built-in materials: runs it on this thread's context. */

@@ -24,7 +24,7 @@ final class ClassResolver {
             "Camera", Camera.class, "Surface", Surface.class, "Material", Material.class, "Light", Light.class);
 
     /** Other names accepted for built-in classes. */
-    private static final Map<String, String> ALIASES = Map.of("Glazed", "GlazedMaterial");
+    private static final Map<String, String> ALIASES = Map.of("Glazed", "GlazedMaterial", "Dielectric", "DielectricMaterial");
 
     private static final String[] PACKAGES = {"ray.surface.", "ray.material.", "ray.light.", "ray."};
 
@@ -140,8 +140,8 @@ final class ClassResolver {
         switch (type) {
             case "Camera": return "Camera";
             case "Surface": return "Sphere, Triangle";
-            case "Material": return "Diffuse, BlinnPhong, GlazedMaterial (or Glazed)";
-            default: return "PointLight";
+            case "Material": return "Diffuse, BlinnPhong, GlazedMaterial (or Glazed), DielectricMaterial (or Dielectric)";
+            default: return "PointLight, SpotLight, AreaLight";
         }
     }
 }

@@ -32,10 +32,11 @@ import ray.surface.Surface;
  */
 public final class Parser {
 
-    static final List<String> GLOBALS = List.of("BGColor", "AmbientLight", "Width", "Height", "AASamples", "MaxDepth");
+    static final List<String> GLOBALS = List.of("BGColor", "AmbientLight", "Width", "Height", "AASamples", "MaxDepth", "Sampler",
+            "TargetError");
     static final List<String> TYPES = List.of("int", "double", "String", "ref", "Vector3d");
     private static final List<String> KEYWORDS = List.of("Camera", "Surface", "Material", "Light",
-            "BGColor", "AmbientLight", "Width", "Height", "AASamples", "MaxDepth", "int", "double", "String", "ref", "Vector3d");
+            "BGColor", "AmbientLight", "Width", "Height", "AASamples", "MaxDepth", "Sampler", "TargetError", "int", "double", "String", "ref", "Vector3d");
 
     private final String file;
     private final ClassResolver resolver;
@@ -56,6 +57,8 @@ public final class Parser {
     private final Map<String, Integer> currentFields = new HashMap<>();
     private int cameraLine;
     private int degenerate;
+    /** Surfaces other surfaces are built from (CSG operands): left out of the scene at the end. */
+    private final java.util.Set<Surface> operands = java.util.Collections.newSetFromMap(new java.util.IdentityHashMap<>());
     private int firstDegenerateLine;
 
     private int line;
@@ -265,6 +268,7 @@ public final class Parser {
         if (name != null) {
             named.put(name, o);
             namedLines.put(name, line);
+            scene.name(o, name);
         }
     }
 
@@ -470,6 +474,11 @@ public final class Parser {
                 if (flat && degenerate++ == 0) {
                     firstDegenerateLine = line;
                 }
+                try {
+                    operands.addAll(s.operands());
+                } catch (RuntimeException | LinkageError e) {
+                    throw error(o.getClass().getSimpleName() + ".operands() failed: " + describe(e));
+                }
                 scene.surfaces.add(s);
                 break;
             case "Material":
@@ -491,7 +500,8 @@ public final class Parser {
         }
         if (value.isEmpty()) {
             throw error("'" + key + "' needs a value (expected '" + key + " " + (vector ? "[r g b]" : key.equals("AASamples") ? "<n>"
-                    : key.equals("MaxDepth") ? "<bounces>" : "<pixels>") + "')");
+                    : key.equals("MaxDepth") ? "<bounces>" : key.equals("Sampler") ? "<name>"
+                    : key.equals("TargetError") ? "<8-bit steps>" : "<pixels>") + "')");
         }
         try {
             switch (key) {
@@ -500,11 +510,29 @@ public final class Parser {
                 case "Width" -> scene.width = range(value, key, 1, Limits.MAX_SIDE);
                 case "Height" -> scene.height = range(value, key, 1, Limits.MAX_SIDE);
                 case "AASamples" -> scene.samplesPerPixel = range(value, key, 1, Limits.MAX_AA_SAMPLES);
+                case "Sampler" -> scene.sampler = samplerName(value);
+                case "TargetError" -> scene.targetError = targetError(value);
                 default -> scene.maxDepth = range(value, key, 0, Limits.MAX_DEPTH);
             }
         } catch (Problem p) {
             throw error(p.getMessage());
         }
+    }
+
+    private static String samplerName(String value) throws Problem {
+        if (!ray.render.Sampler.NAMES.contains(value)) {
+            throw new Problem(Values.quote("Sampler " + value) + " names no sampler (" + Values.caseHint(value, ray.render.Sampler.NAMES)
+                    + "expected one of " + String.join(", ", ray.render.Sampler.NAMES) + ")");
+        }
+        return value;
+    }
+
+    private static double targetError(String value) throws Problem {
+        double e = Values.parseDouble(value, "TargetError");
+        if (!(e >= 0) || e > 255) {
+            throw new Problem(Values.quote("TargetError " + value) + " is out of range (expected 0 to 255 8-bit steps)");
+        }
+        return e;
     }
 
     private static int range(String value, String key, int min, int max) throws Problem {
@@ -543,6 +571,15 @@ public final class Parser {
         if (Double.isNaN(scene.camera.aspect)) {
             scene.camera.aspect = (double) scene.width / scene.height;
             scene.camera.recalculate();
+        }
+        if (!operands.isEmpty()) {
+            List<Surface> rendered = new ArrayList<>(scene.surfaces.size());
+            for (Surface s : scene.surfaces) {
+                if (!operands.contains(s)) {
+                    rendered.add(s);
+                }
+            }
+            scene.surfaces = rendered;
         }
         if (degenerate > 0) {
             warnings.add(file + ":" + firstDegenerateLine + ": warning: zero-area triangle, never hit"

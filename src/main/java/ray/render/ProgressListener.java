@@ -12,4 +12,13 @@ public interface ProgressListener {
     /** Pixels [x0, x1) x [y0, y1) of {@code image} are final; {@code done} of {@code total} tiles are. */
     default void tileDone(Image image, int x0, int y0, int x1, int y1, int done, int total) {
     }
+
+    /**
+     * A progressive render ({@link RenderSettings#progressive}) finished pass {@code pass} (from 0) of
+     * {@code passes}: every pixel of {@code image} now holds that pass's estimate (pass 0 is a cheap
+     * first look, one sample per pixel; the last pass is the final image). Within a pass, {@link #tileDone}
+     * reports its tiles as usual, done and total counting that pass's tiles.
+     */
+    default void passDone(Image image, int pass, int passes) {
+    }
 }

@@ -26,7 +26,11 @@ public final class Renderer {
     private SamplePattern pattern = SamplePattern.GRID;
     private ProgressListener listener = ProgressListener.NONE;
     private volatile boolean cancelled;
-    private final RayStats stats = new RayStats();
+    private RayStats stats = new RayStats();
+    private RenderSettings settings = new RenderSettings();
+    private RenderSummary summary;
+    /** n_s of the render in progress. */
+    private int ns = 1;
 
     public Renderer(Scene scene) {
         this.scene = scene;
@@ -60,16 +64,54 @@ public final class Renderer {
         return stats;
     }
 
-    /** Renders the whole image. Throws {@link RenderCancelledException} if {@link #cancel()} was called. */
+    /** How to sample (sampler, n_s, target error, MaxDepth, passes); unset values come from the scene. */
+    public Renderer settings(RenderSettings s) {
+        this.settings = s;
+        return this;
+    }
+
+    /** What the last {@link #render()} cost and its estimated error; null before the first render. */
+    public RenderSummary summary() {
+        return summary;
+    }
+
+    /**
+     * Renders the whole image (linear colours). Throws {@link RenderCancelledException} if
+     * {@link #cancel()} was called. A {@link RenderSettings#maxDepth} override is set on the scene for
+     * the render and restored after.
+     */
     public Image render() {
-        scene.prepare();
+        int savedDepth = scene.maxDepth;
+        scene.maxDepth = settings.maxDepth(scene);
+        try {
+            long t0 = System.nanoTime();
+            scene.prepare();
+            ns = settings.samples(scene);
+            Sampler sampler = Sampler.create(settings.samplerName(scene), ns);
+            stats = new RayStats();
+            Image image;
+            Film film = null;
+            if (sampler instanceof GridSampler && !settings.progressive()) {
+                image = renderGrid(sampler);
+            } else {
+                SampledRender s = new SampledRender(this, scene, sampler, settings.targetError(scene), settings.progressive());
+                image = s.run();
+                film = s.film();
+            }
+            double spp = film == null ? ns * ns : (double) film.totalSamples() / ((double) scene.width * scene.height);
+            summary = new RenderSummary(sampler.name(), ns, (System.nanoTime() - t0) / 1e9, stats, spp,
+                    film == null ? Double.NaN : RenderSummary.estimatedRmse(film), film);
+            return image;
+        } finally {
+            scene.maxDepth = savedDepth;
+        }
+    }
+
+    /** The scene format's grid (or the {@link #pattern} set), every pixel in one go: no film, today's exact arithmetic. */
+    private Image renderGrid(Sampler grid) {
         int w = scene.width, h = scene.height;
         Image image = new Image(w, h);
-        int tilesX = (w + TILE - 1) / TILE, tilesY = (h + TILE - 1) / TILE, total = tilesX * tilesY;
-        AtomicInteger next = new AtomicInteger(), done = new AtomicInteger();
-        int n = Math.max(1, Math.min(threads, total));
         // the regular grid's image-plane coordinates, once per sample column and row instead of per sample
-        int ns = Math.max(1, scene.samplesPerPixel);
         double[] planeA = null, planeB = null;
         if (pattern == SamplePattern.GRID) {
             double[] off = new double[2 * ns * ns];
@@ -88,6 +130,51 @@ public final class Renderer {
             }
         }
         final double[] tableA = planeA, tableB = planeB;
+        runTiles(image, new TileWork() {
+            @Override
+            public TileWorker worker(TraceContext ctx) {
+                Vector3d c = new Vector3d();
+                double[] offsets = new double[2 * ns * ns];
+                return new TileWorker() {
+                    @Override
+                    public void tile(int x0, int y0, int x1, int y1) {
+                        for (int y = y0; y < y1; y++) {
+                            for (int x = x0; x < x1; x++) {
+                                if (tableA != null) {
+                                    renderGridPixel(ctx, x, y, c, tableA, tableB, grid);
+                                } else {
+                                    renderPixel(ctx, x, y, c, offsets);
+                                }
+                                image.set(x, y, c.x, c.y, c.z);
+                            }
+                        }
+                    }
+                };
+            }
+        });
+        return image;
+    }
+
+    /** One render thread's work on tiles: made once per thread with that thread's context. */
+    interface TileWork {
+        TileWorker worker(TraceContext ctx);
+    }
+
+    interface TileWorker {
+        /** Renders pixels [x0, x1) x [y0, y1) and writes them into the image. */
+        void tile(int x0, int y0, int x1, int y1);
+    }
+
+    /**
+     * Hands the image's tiles, in scan order, to the render threads, each with its own context; reports
+     * each finished tile of {@code image} to the listener; adds the threads' ray counts to {@link #stats()}.
+     * Rethrows the first failure; throws {@link RenderCancelledException} when cancelled.
+     */
+    void runTiles(Image image, TileWork work) {
+        int w = scene.width, h = scene.height;
+        int tilesX = (w + TILE - 1) / TILE, tilesY = (h + TILE - 1) / TILE, total = tilesX * tilesY;
+        AtomicInteger next = new AtomicInteger(), done = new AtomicInteger();
+        int n = Math.max(1, Math.min(threads, total));
         List<Thread> workers = new ArrayList<>();
         List<TraceContext> contexts = new ArrayList<>();
         Throwable[] failure = new Throwable[1];
@@ -95,26 +182,16 @@ public final class Renderer {
             TraceContext ctx = new TraceContext(scene.maxDepth);
             contexts.add(ctx);
             // an anonymous class, not a lambda: linking a lambda costs milliseconds at start-up
-            Runnable work = new Runnable() {
+            Runnable run = new Runnable() {
                 @Override
                 public void run() {
                     TraceContext.bind(ctx);
-                    Vector3d c = new Vector3d();
-                    double[] offsets = new double[2 * scene.samplesPerPixel * scene.samplesPerPixel];
                     try {
+                        TileWorker worker = work.worker(ctx);
                         for (int tile; !cancelled && (tile = next.getAndIncrement()) < total; ) {
                             int x0 = (tile % tilesX) * TILE, y0 = (tile / tilesX) * TILE;
                             int x1 = Math.min(w, x0 + TILE), y1 = Math.min(h, y0 + TILE);
-                            for (int y = y0; y < y1; y++) {
-                                for (int x = x0; x < x1; x++) {
-                                    if (tableA != null) {
-                                        renderGridPixel(ctx, x, y, c, tableA, tableB);
-                                    } else {
-                                        renderPixel(ctx, x, y, c, offsets);
-                                    }
-                                    image.set(x, y, c.x, c.y, c.z);
-                                }
-                            }
+                            worker.tile(x0, y0, x1, y1);
                             listener.tileDone(image, x0, y0, x1, y1, done.incrementAndGet(), total);
                         }
                     } catch (Throwable e) {
@@ -129,7 +206,7 @@ public final class Renderer {
                     }
                 }
             };
-            Thread th = new Thread(null, work, "render-" + t, STACK_BYTES);
+            Thread th = new Thread(null, run, "render-" + t, STACK_BYTES);
             th.setDaemon(true);
             workers.add(th);
             th.start();
@@ -153,7 +230,10 @@ public final class Renderer {
         if (cancelled) {
             throw new RenderCancelledException();
         }
-        return image;
+    }
+
+    ProgressListener listener() {
+        return listener;
     }
 
     @SuppressWarnings("unchecked")
@@ -163,22 +243,22 @@ public final class Renderer {
 
     /** The mean of pixel (x, y)'s n_s x n_s samples, written into {@code out}. */
     public void renderPixel(TraceContext ctx, int x, int y, Vector3d out) {
-        int ns = scene.samplesPerPixel;
+        ns = Math.max(1, scene.samplesPerPixel);
         renderPixel(ctx, x, y, out, new double[2 * ns * ns]);
     }
 
     /** {@link #renderPixel} for the regular grid, with the image-plane coordinates from the tables. */
-    private void renderGridPixel(TraceContext ctx, int x, int y, Vector3d out, double[] planeA, double[] planeB) {
-        int ns = Math.max(1, scene.samplesPerPixel), count = ns * ns;
+    private void renderGridPixel(TraceContext ctx, int x, int y, Vector3d out, double[] planeA, double[] planeB, Sampler grid) {
+        int count = ns * ns;
         double r = 0, g = 0, b = 0;
         Vector3d c = ctx.color(0);
         Ray ray = ctx.ray(0);
         for (int j = 0, s = 0; j < ns; j++) {
             double pb = planeB[y * ns + j];
             for (int i = 0; i < ns; i++, s++) {
+                ctx.sample.start(grid, x, y, s);
                 scene.camera.setRay(ray, planeA[x * ns + i], pb);
-                ctx.stats.camera++;
-                scene.traceInto(ray, ctx, c);
+                scene.traceCamera(ray, ctx, c);
                 if (Double.isFinite(c.x) && Double.isFinite(c.y) && Double.isFinite(c.z)) {
                     r += c.x;
                     g += c.y;
@@ -192,14 +272,13 @@ public final class Renderer {
     }
 
     private void renderPixel(TraceContext ctx, int x, int y, Vector3d out, double[] offsets) {
-        int ns = Math.max(1, scene.samplesPerPixel), count = ns * ns;
+        int count = ns * ns;
         pattern.offsets(x, y, ns, offsets);
         double r = 0, g = 0, b = 0;
         Vector3d c = ctx.color(0);
         for (int s = 0; s < count; s++) {
             scene.camera.setRayThrough(ctx.ray(0), x + offsets[2 * s], y + offsets[2 * s + 1], scene.width, scene.height);
-            ctx.stats.camera++;
-            scene.traceInto(ctx.ray(0), ctx, c);
+            scene.traceCamera(ctx.ray(0), ctx, c);
             if (Double.isFinite(c.x) && Double.isFinite(c.y) && Double.isFinite(c.z)) {
                 r += c.x;
                 g += c.y;

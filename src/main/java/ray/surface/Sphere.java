@@ -53,6 +53,11 @@ public class Sphere extends Surface {
     }
 
     @Override
+    public boolean isClosed() {
+        return true;
+    }
+
+    @Override
     public Aabb bounds() {
         return new Aabb(center.x - radius, center.y - radius, center.z - radius,
                 center.x + radius, center.y + radius, center.z + radius);

@@ -1,5 +1,6 @@
 package ray.surface;
 
+import java.util.List;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.Scene;
@@ -25,6 +26,33 @@ public abstract class Surface implements SceneObject {
     /** World-space bounding box; the default (infinite) keeps the surface out of the BVH. */
     public Aabb bounds() {
         return Aabb.infinite();
+    }
+
+    /**
+     * True when the surface bounds a solid: every ray from outside that enters leaves again, and
+     * {@code intersects} reports hits from inside too, with {@code frontFace} telling which side the ray
+     * came from. Only closed surfaces can be CSG operands. The default is false.
+     */
+    public boolean isClosed() {
+        return false;
+    }
+
+    /**
+     * The surfaces this one is built from and that are not rendered on their own (a CSG's operands).
+     * The parser leaves them out of the scene's surfaces. The default is none.
+     */
+    public List<Surface> operands() {
+        return List.of();
+    }
+
+    /**
+     * The primitives the acceleration structure holds for this scene object: by default the object
+     * itself. A surface made of many parts (a mesh of triangles) adds its parts instead, each a
+     * {@code Surface} with its own {@link #bounds()} and {@link #intersects} and its {@link #material}
+     * set; a hit then reports the part as {@code record.surface}. Called once per {@link Scene#prepare()}.
+     */
+    public void collectPrimitives(java.util.List<Surface> out) {
+        out.add(this);
     }
 
     /** True when the surface can never be hit (e.g. a zero-area triangle); it is left out of the scene. */

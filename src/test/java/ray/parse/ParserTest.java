@@ -373,6 +373,12 @@ class ParserTest {
             "AASamples 1000     | 'AASamples 1000' is out of range | expected 1 to 64",
             "MaxDepth -1        | 'MaxDepth -1' is out of range | expected 0 to 1000",
             "MaxDepth 100000    | 'MaxDepth 100000' is out of range | expected 0 to 1000",
+            "Sampler halton     | 'Sampler halton' names no sampler | expected one of grid, jittered, sobol, adaptive",
+            "Sampler Sobol      | did you mean 'sobol'?         | expected one of grid, jittered, sobol, adaptive",
+            "Sampler            | 'Sampler' needs a value       | expected 'Sampler <name>'",
+            "TargetError -1     | 'TargetError -1' is out of range | expected 0 to 255 8-bit steps",
+            "TargetError 1e9    | 'TargetError 1e9' is out of range | expected 0 to 255 8-bit steps",
+            "TargetError half   | 'half' is not a number for TargetError | expected a decimal number",
             "Width 4.5          | '4.5' is not a whole number   | Width",
             "Width              | 'Width' needs a value         | expected 'Width <pixels>'"})
         void globalOutOfRangeGivesTheLimits(String line, String found, String expected) {
@@ -611,6 +617,10 @@ class ParserTest {
             assertEquals(5, s.height);
             assertEquals(3, s.samplesPerPixel);
             assertEquals(2, s.maxDepth);
+            assertEquals("grid", s.sampler, "the default sampler");
+            Scene t = parse("Width 7\nHeight 5\nSampler adaptive\nTargetError 0.25\n\nCamera Camera\n");
+            assertEquals("adaptive", t.sampler);
+            assertEquals(0.25, t.targetError);
         }
     }
 

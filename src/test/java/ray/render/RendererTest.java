@@ -16,6 +16,7 @@ import org.junit.jupiter.api.Test;
 import ray.Camera;
 import ray.IntersectionRecord;
 import ray.Ray;
+import ray.RayKind;
 import ray.Scene;
 import ray.material.Diffuse;
 import ray.material.Material;
@@ -242,8 +243,8 @@ class RendererTest {
     void cameraRaysAreWidthTimesHeightTimesSamplesSquared() throws Exception {
         Renderer r = new Renderer(parse(BUSY)).threads(3);
         r.render();
-        assertEquals(70L * 40 * 9, r.stats().camera);
-        assertTrue(r.stats().shadow > 0 && r.stats().mirror > 0, r.stats().toString());
+        assertEquals(70L * 40 * 9, r.stats().get(RayKind.CAMERA));
+        assertTrue(r.stats().get(RayKind.SHADOW) > 0 && r.stats().get(RayKind.MIRROR) > 0, r.stats().toString());
         assertEquals(0, r.stats().invalidSamples);
     }
 
@@ -257,17 +258,17 @@ class RendererTest {
 
         Renderer r = new Renderer(parse(facing("AASamples 2", matte + WALL + front))).threads(2);
         r.render();
-        assertEquals(camera, r.stats().camera);
-        assertEquals(camera, r.stats().shadow, "one shadow ray per hit for a light in front");
+        assertEquals(camera, r.stats().get(RayKind.CAMERA));
+        assertEquals(camera, r.stats().get(RayKind.SHADOW), "one shadow ray per hit for a light in front");
 
         r = new Renderer(parse(facing("AASamples 2", matte + WALL + behind))).threads(2);
         r.render();
-        assertEquals(0, r.stats().shadow, "none for a light behind the wall");
+        assertEquals(0, r.stats().get(RayKind.SHADOW), "none for a light behind the wall");
 
         r = new Renderer(parse(facing("AASamples 2", matte + WALL + front + behind))).threads(2);
         r.render();
-        assertEquals(camera, r.stats().shadow, "one light in front, one behind");
-        assertEquals(0, r.stats().mirror);
+        assertEquals(camera, r.stats().get(RayKind.SHADOW), "one light in front, one behind");
+        assertEquals(0, r.stats().get(RayKind.MIRROR));
     }
 
     @Test
@@ -275,11 +276,11 @@ class RendererTest {
         String glazed = "Material Glazed m\ndouble mirrorCoefficient 0.5\n\n";
         Renderer r = new Renderer(parse(facing("MaxDepth 3", glazed + WALL))).threads(2);
         r.render();
-        assertEquals(12 * 8, r.stats().mirror, "one mirror ray per pixel: it flies off into the sky");
+        assertEquals(12 * 8, r.stats().get(RayKind.MIRROR), "one mirror ray per pixel: it flies off into the sky");
 
         r = new Renderer(parse(facing("MaxDepth 0", glazed + WALL))).threads(2);
         r.render();
-        assertEquals(0, r.stats().mirror, "MaxDepth 0 follows no mirror ray");
+        assertEquals(0, r.stats().get(RayKind.MIRROR), "MaxDepth 0 follows no mirror ray");
     }
 
     @Test

@@ -1,0 +1,40 @@
+package ray.app;
+
+import java.nio.file.Path;
+import ray.RayKind;
+import ray.RayStats;
+import ray.Scene;
+import ray.accel.Bvh;
+import ray.plan.JsonLine;
+
+/** {@code --stats --json}: one render's numbers as one JSON object (keys in docs/json.md). */
+final class StatsJson {
+
+    private StatsJson() {
+    }
+
+    /** {@code t} holds System.nanoTime() at start, after parsing, after rendering and after writing. */
+    static String line(Path scenePath, Path png, Scene scene, RayStats stats, long[] t) {
+        long build = scene.accelerator() instanceof Bvh b ? b.buildNanos() : 0;
+        double bytes = scene.accelerator() instanceof Bvh b && b.primitiveCount() > 0
+                ? Math.round(10.0 * b.memoryBytes() / b.primitiveCount()) / 10.0 : 0;
+        JsonLine j = new JsonLine().put("scene", scenePath.toString()).put("output", png.toString())
+                .put("width", scene.width).put("height", scene.height)
+                .put("samplesPerPixel", Math.max(1, scene.samplesPerPixel) * Math.max(1, scene.samplesPerPixel))
+                .put("maxDepth", scene.maxDepth);
+        j.open("seconds").put("parse", seconds(t[1] - t[0])).put("build", seconds(build)).put("render", seconds(t[2] - t[1] - build))
+                .put("write", seconds(t[3] - t[2])).put("total", seconds(t[3] - t[0])).close();
+        j.put("cpuSeconds", seconds(Main.processCpuNanos())).put("peakRssBytes", Main.peakRssBytes()).put("bvhBytesPerPrimitive", bytes);
+        j.open("rays");
+        for (RayKind k : RayKind.values()) {
+            j.put(k.key(), stats.get(k));
+        }
+        j.close().put("invalidSamples", stats.invalidSamples);
+        return j.toString();
+    }
+
+    /** Nanoseconds as seconds, rounded to the microsecond. */
+    private static double seconds(long nanos) {
+        return Math.round(nanos / 1e3) / 1e6;
+    }
+}

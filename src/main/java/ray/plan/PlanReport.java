@@ -1,0 +1,264 @@
+package ray.plan;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import javax.vecmath.Vector3d;
+import ray.RayKind;
+import ray.Scene;
+import ray.light.Light;
+import ray.material.Material;
+
+/**
+ * The render plan told to a person ({@link #text()}) or a program ({@link #json}): each effect the scene
+ * uses and what it costs, each it does not and why, what the plan saved, and the bound on rays with
+ * and without the plan's skips.
+ */
+public final class PlanReport {
+
+    /** One effect: its name, whether it is on, why, and the kind of ray it casts (null: none). */
+    public static final class Effect {
+        public final String name, why;
+        public final boolean on;
+        public final RayKind kind;
+
+        Effect(String name, boolean on, String why, RayKind kind) {
+            this.name = name;
+            this.on = on;
+            this.why = why;
+            this.kind = kind;
+        }
+    }
+
+    private final String sceneName;
+    private final RenderPlan plan, without;
+    private final List<Effect> effects = new ArrayList<>();
+    private final List<String> lightLines = new ArrayList<>(), saved = new ArrayList<>();
+
+    public PlanReport(String sceneName, RenderPlan plan, RenderPlan without) {
+        this.sceneName = sceneName;
+        this.plan = plan;
+        this.without = without;
+        Scene s = plan.scene();
+        Map<Material, Shading> used = plan.used;
+        int ns = Math.max(1, s.samplesPerPixel);
+        boolean adaptive = "adaptive".equals(s.sampler);
+        effects.add(new Effect("camera rays", true, s.width + " x " + s.height + " pixels x " + (adaptive ? "at most " : "") + ns + "x" + ns
+                + " samples (" + s.sampler + " sampler)", RayKind.CAMERA));
+        List<Material> ambient = select(used, true, "ambient"), direct = select(used, true, "direct"),
+                highlight = select(used, true, "highlight"), mirror = select(used, true, "mirror"),
+                refraction = select(used, true, "refraction"), unknown = select(used, true, "unknown");
+        effects.add(new Effect("ambient", !ambient.isEmpty(), !ambient.isEmpty() ? "k_a I_a at " + names(ambient)
+                + " (computed once per material)" : zero(s.ambientLight) ? "I_a = 0" : "no material has k_a", null));
+        boolean lit = plan.lights().length > 0 && !direct.isEmpty();
+        effects.add(new Effect("direct light", lit, lit ? "at " + names(direct) + ", from " + plan.lights().length + " light"
+                + (plan.lights().length == 1 ? "" : "s") : s.lights.isEmpty() ? "no lights" : plan.lights().length == 0
+                ? "every light is dark" : "no material has a direct term", RayKind.SHADOW));
+        effects.add(new Effect("highlights", lit && !highlight.isEmpty(), !highlight.isEmpty() ? "k_s at " + names(highlight)
+                : "no material has k_s", null));
+        boolean reflects = !mirror.isEmpty() && s.maxDepth > 0;
+        effects.add(new Effect("mirror reflection", reflects, reflects ? "at " + names(mirror) + ", MaxDepth " + s.maxDepth
+                : mirror.isEmpty() ? "no material reflects" : "MaxDepth 0", RayKind.MIRROR));
+        boolean refracts = !refraction.isEmpty() && s.maxDepth > 0;
+        effects.add(new Effect("refraction", refracts, refracts ? "at " + names(refraction) + ", MaxDepth " + s.maxDepth
+                : refraction.isEmpty() ? "no material refracts" : "MaxDepth 0", RayKind.REFRACTION));
+        List<String> sampled = new ArrayList<>();
+        for (Light l : plan.lights()) {
+            if (!plan.unknownLights.contains(l) && l.shadowRaysPerPoint() > 1) {
+                sampled.add(label(l) + " " + l.shadowRaysPerPoint());
+            }
+        }
+        effects.add(new Effect("area-light samples", lit && !sampled.isEmpty(), sampled.isEmpty() ? "no sampled light"
+                : "per lit point: " + String.join(", ", sampled), null));
+        boolean user = !unknown.isEmpty() || lit && !plan.unknownLights.isEmpty();
+        List<String> who = new ArrayList<>();
+        for (Material m : unknown) {
+            who.add(label(m));
+        }
+        for (Light l : plan.unknownLights) {
+            who.add(label(l));
+        }
+        effects.add(new Effect("user rays", user, user ? "user classes the plan cannot see into: " + String.join(", ", who)
+                + " (assumed to need everything)" : "no user class", RayKind.USER));
+        for (int i = 0; i < s.lights.size(); i++) {
+            Light l = s.lights.get(i);
+            lightLines.add(label(l) + ": " + (plan.dark.contains(l) ? "zero intensity, skipped"
+                    : plan.unknownLights.contains(l) ? "a user's light: evaluated through its own code, rays unknown"
+                    : l.shadowRaysPerPoint() + " shadow ray" + (l.shadowRaysPerPoint() == 1 ? "" : "s") + " per lit point"));
+        }
+        savings(s, used);
+    }
+
+    private void savings(Scene s, Map<Material, Shading> used) {
+        boolean anyLight = plan.lights().length > 0;
+        List<Material> pure = select(used, true, "pure"), flat = new ArrayList<>(), folded = new ArrayList<>();
+        for (Map.Entry<Material, Shading> e : used.entrySet()) {
+            Shading w = without.used.get(e.getKey());
+            if (!e.getValue().direct && w != null && w.direct && !e.getValue().pureMirror) {
+                flat.add(e.getKey());
+            }
+            if (e.getValue().folded > 1 && plan.skipping(Skip.FOLD_GLAZED)) {
+                folded.add(e.getKey());
+                saved.add("nested Glazed chain folded at " + label(e.getKey()) + " (" + e.getValue().folded
+                        + " levels): one mirror ray per hit instead of " + w.mirror);
+            }
+        }
+        if (anyLight && !pure.isEmpty()) {
+            saved.add("no shadow rays at the " + plural(pure.size(), "pure mirror") + " (" + names(pure)
+                    + "): a Glazed material without a base has no direct term");
+        }
+        if (anyLight && !flat.isEmpty()) {
+            saved.add("no light evaluation and no shadow rays at " + names(flat) + ": k_d = k_s = 0, no direct term");
+        }
+        for (Light l : plan.dark) {
+            saved.add(label(l) + " has zero intensity: skipped");
+        }
+        if (select(used, true, "mirror").isEmpty()) {
+            saved.add("no mirror rays: no material reflects");
+        }
+        for (Map.Entry<Material, Shading> e : without.used.entrySet()) {
+            Shading p = used.get(e.getKey());
+            if (e.getValue().mirror > p.mirror && !folded.contains(e.getKey())) {
+                saved.add("no mirror rays at " + label(e.getKey()) + ": k_m = 0");
+            }
+        }
+        if (zero(s.ambientLight)) {
+            saved.add("no ambient term: I_a = 0");
+        }
+    }
+
+    /** The materials whose shading has the named property. */
+    private static List<Material> select(Map<Material, Shading> used, boolean on, String what) {
+        List<Material> out = new ArrayList<>();
+        for (Map.Entry<Material, Shading> e : used.entrySet()) {
+            Shading s = e.getValue();
+            boolean has = switch (what) {
+                case "ambient" -> s.terms.contains(Term.AMBIENT) && !s.unknown;
+                case "direct" -> s.direct;
+                case "highlight" -> s.terms.contains(Term.HIGHLIGHT);
+                case "mirror" -> s.mirror > 0;
+                case "refraction" -> s.refraction > 0;
+                case "unknown" -> s.unknown;
+                case "pure" -> s.pureMirror && !s.direct;
+                default -> throw new IllegalArgumentException(what);
+            };
+            if (has == on) {
+                out.add(e.getKey());
+            }
+        }
+        return out;
+    }
+
+    private String names(List<Material> ms) {
+        List<String> n = new ArrayList<>();
+        for (int i = 0; i < ms.size() && i < 6; i++) {
+            n.add(label(ms.get(i)));
+        }
+        return String.join(", ", n) + (ms.size() > 6 ? " and " + (ms.size() - 6) + " more" : "");
+    }
+
+    private String label(Object o) {
+        String name = plan.scene().nameOf(o);
+        String cls = o.getClass().getSimpleName();
+        if (o instanceof Light) {
+            return "light " + (plan.scene().lights.indexOf(o) + 1) + " (" + cls + (name == null ? "" : " " + name) + ")";
+        }
+        return name != null ? name : cls;
+    }
+
+    private static String plural(int n, String what) {
+        return n + " " + what + (n == 1 ? "" : "s");
+    }
+
+    private static boolean zero(Vector3d v) {
+        return v.x == 0 && v.y == 0 && v.z == 0;
+    }
+
+    /** The plan with the exact skips. */
+    public RenderPlan plan() {
+        return plan;
+    }
+
+    public List<Effect> effects() {
+        return effects;
+    }
+
+    public List<String> saved() {
+        return saved;
+    }
+
+    /** The plan for a person: one line per effect, the lights, what was saved, the bounds. */
+    public List<String> text() {
+        List<String> out = new ArrayList<>();
+        Scene s = plan.scene();
+        out.add("plan for " + sceneName + " (" + s.width + "x" + s.height + ", MaxDepth " + s.maxDepth + ")");
+        for (Effect e : effects) {
+            String cost = e.kind == null ? "" : "   <= " + count(plan.bound().get(e.kind)) + " " + e.kind.key() + " rays";
+            out.add(String.format(java.util.Locale.ROOT, "  %-19s %-4s %s%s", e.name, e.on ? "on" : "off", e.why, e.on ? cost : ""));
+        }
+        for (String l : lightLines) {
+            out.add("    " + l);
+        }
+        for (String w : saved) {
+            out.add("  saved: " + w);
+        }
+        out.add("  bound: " + bounds(plan.bound()));
+        out.add("  without the plan's skips: " + bounds(without.bound()));
+        return out;
+    }
+
+    private static String bounds(RayBound b) {
+        StringBuilder t = new StringBuilder(count(b.total()) + " rays (");
+        for (RayKind k : RayKind.values()) {
+            t.append(k.ordinal() == 0 ? "" : ", ").append(k.key()).append(' ').append(count(b.get(k)));
+        }
+        return t.append(')').toString();
+    }
+
+    /** A ray count for people: grouped digits, or 1.2e+13 when large, "unbounded" when unknown. */
+    public static String count(double n) {
+        if (!Double.isFinite(n)) {
+            return "unbounded";
+        }
+        return n < 1e12 ? String.format(java.util.Locale.ROOT, "%,d", (long) n) : String.format(java.util.Locale.ROOT, "%.1e", n);
+    }
+
+    /** The plan for a program: one JSON object (keys in docs/json.md). */
+    public String json() {
+        Scene s = plan.scene();
+        JsonLine j = new JsonLine().put("scene", sceneName).put("width", s.width).put("height", s.height)
+                .put("samplesPerPixel", Math.max(1, s.samplesPerPixel) * Math.max(1, s.samplesPerPixel)).put("maxDepth", s.maxDepth);
+        j.open("effects");
+        for (Effect e : effects) {
+            j.open(key(e.name)).put("on", e.on).put("why", e.why).close();
+        }
+        j.close();
+        bound(j.open("bound"), plan.bound()).close();
+        bound(j.open("boundWithoutPlan"), without.bound()).close();
+        j.put("totalBound", plan.bound().total()).put("totalBoundWithoutPlan", without.bound().total());
+        j.put("lights", lightLines).put("saved", saved);
+        return j.toString();
+    }
+
+    private static JsonLine bound(JsonLine j, RayBound b) {
+        for (RayKind k : RayKind.values()) {
+            j.put(k.key(), b.get(k));
+        }
+        return j;
+    }
+
+    /** "mirror reflection" -> "mirrorReflection". */
+    static String key(String name) {
+        StringBuilder k = new StringBuilder();
+        boolean up = false;
+        for (char c : name.toCharArray()) {
+            if (c == ' ' || c == '-') {
+                up = true;
+            } else {
+                k.append(up ? Character.toUpperCase(c) : c);
+                up = false;
+            }
+        }
+        return k.toString();
+    }
+}

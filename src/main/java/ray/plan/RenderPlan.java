@@ -1,0 +1,119 @@
+package ray.plan;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.EnumSet;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import ray.Scene;
+import ray.light.Light;
+import ray.material.GlazedMaterial;
+import ray.material.Material;
+import ray.surface.Surface;
+
+/**
+ * The render plan: which effects a scene uses, derived once per render from its materials, lights,
+ * surfaces and globals before the first ray ({@link Scene#prepare()}), with an upper bound on the rays
+ * of each kind. Built-in materials read it once ({@link Material#planned}) and cast only what it lists:
+ * no light evaluation where a material has no direct term, no dark light, no mirror ray where k_m = 0,
+ * one mirror ray for a chain of Glazed materials. {@link PlanReport} prints it.
+ */
+public final class RenderPlan {
+
+    /** Every exact skip off: the renderer does what it did before the plan. */
+    public static final Set<Skip> NO_SKIPS = Collections.unmodifiableSet(EnumSet.noneOf(Skip.class));
+
+    private final Scene scene;
+    private final Set<Skip> skips;
+    private final Light[] lights;
+    /** Every material a hit can shade (on surfaces, declared, or a Glazed base), for {@link #apply()}. */
+    private final Set<Material> materials;
+    /** How each material on a surface shades, in scene order. */
+    final Map<Material, Shading> used = new LinkedHashMap<>();
+    /** Lights the plan skipped, and lights whose rays it cannot know (user classes). */
+    final List<Light> dark = new ArrayList<>(), unknownLights = new ArrayList<>();
+    final RayBound bound;
+
+    private RenderPlan(Scene scene, Set<Skip> skips) {
+        this.scene = scene;
+        this.skips = skips.isEmpty() ? NO_SKIPS : Collections.unmodifiableSet(EnumSet.copyOf(skips));
+        List<Light> evaluated = new ArrayList<>();
+        for (Light l : scene.lights) {
+            boolean trusted = Trust.light(l);
+            if (trusted && l.isDark() && this.skips.contains(Skip.DARK_LIGHTS)) {
+                dark.add(l);
+                continue;
+            }
+            if (!trusted || l.shadowRaysPerPoint() < 0) {
+                unknownLights.add(l);
+            }
+            evaluated.add(l);
+        }
+        lights = evaluated.toArray(new Light[0]);
+        for (Surface s : scene.surfaces) {
+            if (s.material != null) {
+                used.computeIfAbsent(s.material, m -> Shading.of(m, this.skips));
+            }
+        }
+        materials = new LinkedHashSet<>(used.keySet());
+        materials.addAll(scene.materials);
+        java.util.ArrayDeque<Material> todo = new java.util.ArrayDeque<>(materials);
+        while (!todo.isEmpty()) {   // the bases a Glazed material shades, declared or not
+            if (todo.pop() instanceof GlazedMaterial g && g.base != null && materials.add(g.base)) {
+                todo.push(g.base);
+            }
+        }
+        materials.remove(null);
+        bound = RayBound.of(this);
+    }
+
+    /** Derives the plan of {@code scene} (its camera already set up) with the given exact skips. */
+    public static RenderPlan derive(Scene scene, Set<Skip> skips) {
+        return new RenderPlan(scene, skips);
+    }
+
+    /** Hands the plan to every material ({@link Material#planned}); {@link Scene#prepare()} calls it. */
+    public void apply() {
+        for (Material m : materials) {
+            m.planned(this);
+        }
+    }
+
+    public Scene scene() {
+        return scene;
+    }
+
+    /** The lights a direct term evaluates: the scene's lights without the dark ones (when skipping them). */
+    public Light[] lights() {
+        return lights;
+    }
+
+    /** True when the plan makes this exact skip. */
+    public boolean skipping(Skip s) {
+        return skips.contains(s);
+    }
+
+    public Set<Skip> skips() {
+        return skips;
+    }
+
+    /** Upper bounds on the rays of each kind this render can cast. */
+    public RayBound bound() {
+        return bound;
+    }
+
+    /**
+     * The terms a material declares, or every term when the plan cannot trust its declaration (a user's
+     * class, or a subclass that shades its own way); none for null. Composite materials ask this of
+     * their parts.
+     */
+    public static Set<Term> termsOf(Material m) {
+        if (m == null) {
+            return EnumSet.noneOf(Term.class);
+        }
+        return Trust.material(m) ? m.terms() : EnumSet.allOf(Term.class);
+    }
+}

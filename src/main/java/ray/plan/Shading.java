@@ -1,0 +1,72 @@
+package ray.plan;
+
+import java.util.EnumSet;
+import java.util.List;
+import java.util.Set;
+import ray.Scene;
+import ray.material.Diffuse;
+import ray.material.GlazedMaterial;
+import ray.material.Material;
+
+/**
+ * What shading one hit on a material does under a set of skips: its terms, the mirror and refraction
+ * rays it casts, whether it evaluates the lights, and whether it runs code the plan cannot see.
+ * Read once per material per render; nothing here runs per sample.
+ */
+final class Shading {
+    final Set<Term> terms;
+    /** Mirror and refraction rays cast per hit (Glazed levels not folded add one each). */
+    final int mirror, refraction;
+    /** Evaluates the lights (and so may cast shadow rays). */
+    final boolean direct;
+    /** Runs a user's code the plan knows nothing about (may trace any rays). */
+    final boolean unknown;
+    /** A Glazed material whose chain ends without a base: only the mirror term. */
+    final boolean pureMirror;
+    /** Levels of a Glazed chain folded into one mirror ray (1 where nothing was folded). */
+    final int folded;
+
+    private Shading(Set<Term> terms, int mirror, int refraction, boolean direct, boolean unknown, boolean pureMirror, int folded) {
+        this.terms = terms;
+        this.mirror = mirror;
+        this.refraction = refraction;
+        this.direct = direct;
+        this.unknown = unknown;
+        this.pureMirror = pureMirror;
+        this.folded = folded;
+    }
+
+    private static final Shading NONE = new Shading(EnumSet.noneOf(Term.class), 0, 0, false, false, false, 1);
+
+    static Shading of(Material m, Set<Skip> skips) {
+        if (m == null) {
+            return NONE;
+        }
+        if (!Trust.material(m)) {
+            return new Shading(EnumSet.allOf(Term.class), 1, 1, true, true, false, 1);
+        }
+        Set<Term> terms = m.terms();
+        if (m instanceof GlazedMaterial g) {
+            List<GlazedMaterial> levels = skips.contains(Skip.FOLD_GLAZED) ? g.chain() : List.of(g);
+            int rays = 0;
+            for (GlazedMaterial level : levels) {
+                if (level.mirrorCoefficient != 0 || !skips.contains(Skip.ZERO_MIRROR)) {
+                    rays++;
+                }
+            }
+            Material bottom = levels.get(levels.size() - 1).base;
+            Shading base = of(bottom, skips);
+            int own = skips.contains(Skip.FOLD_GLAZED) ? Math.min(rays, 1) : rays;
+            return new Shading(terms, own + base.mirror, base.refraction, base.direct, base.unknown,
+                    bottom == null, levels.size());
+        }
+        boolean direct = Term.direct(terms) || m instanceof Diffuse && !skips.contains(Skip.NO_DIRECT_TERM);
+        return new Shading(terms, terms.contains(Term.MIRROR) ? 1 : 0, terms.contains(Term.REFRACTION) ? 1 : 0,
+                direct, terms.contains(Term.OWN_RAYS), false, 1);
+    }
+
+    /** True when the material adds k_a I_a somewhere. */
+    boolean ambient(Scene scene) {
+        return terms.contains(Term.AMBIENT) && !(scene.ambientLight.x == 0 && scene.ambientLight.y == 0 && scene.ambientLight.z == 0);
+    }
+}

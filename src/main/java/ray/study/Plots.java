@@ -1,0 +1,219 @@
+package ray.study;
+
+import java.awt.BasicStroke;
+import java.awt.Color;
+import java.awt.Font;
+import java.awt.Graphics2D;
+import java.awt.RenderingHints;
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import javax.imageio.ImageIO;
+import org.knowm.xchart.BitmapEncoder;
+import org.knowm.xchart.XYChart;
+import org.knowm.xchart.XYChartBuilder;
+import org.knowm.xchart.XYSeries;
+import org.knowm.xchart.style.Styler;
+import org.knowm.xchart.style.markers.SeriesMarkers;
+import ray.render.Image;
+
+/** The study's pictures: error against time, the adaptive estimate against the truth, and crops. */
+final class Plots {
+
+    private Plots() {
+    }
+
+    /** RMSE against median wall time on log-log axes, one curve per sampler (the MaxDepth rows apart). */
+    static void errorVersusTime(SceneStudy.Outcome o, Path png) throws IOException {
+        XYChart c = new XYChartBuilder().width(760).height(480).title(o.name() + ": error against time")
+                .xAxisTitle("wall time (s, median of repeats)").yAxisTitle("RMSE (fraction of [0, 1])").build();
+        c.getStyler().setXAxisLogarithmic(true).setYAxisLogarithmic(true).setLegendPosition(Styler.LegendPosition.OutsideE)
+                .setChartBackgroundColor(Color.WHITE).setMarkerSize(7);
+        Map<String, List<Row>> curves = new LinkedHashMap<>();
+        for (Row r : o.rows()) {
+            String key = isDepthRow(r, o) ? "MaxDepth (grid n_s=" + r.setting().ns() + ")" : r.setting().sampler();
+            curves.computeIfAbsent(key, k -> new ArrayList<>()).add(r);
+        }
+        boolean any = false;
+        for (Map.Entry<String, List<Row>> e : curves.entrySet()) {
+            List<Row> rs = new ArrayList<>();
+            for (Row r : e.getValue()) {
+                if (r.error().rmse > 0 && r.secondsMedian() > 0) {
+                    rs.add(r);
+                }
+            }
+            if (rs.isEmpty()) {
+                continue;
+            }
+            rs.sort((a, b) -> Double.compare(a.secondsMedian(), b.secondsMedian()));
+            XYSeries s = c.addSeries(e.getKey(), rs.stream().mapToDouble(Row::secondsMedian).toArray(),
+                    rs.stream().mapToDouble(r -> r.error().rmse).toArray());
+            s.setMarker(SeriesMarkers.CIRCLE);
+            any = true;
+        }
+        double step = ImageError.STEP;
+        XYSeries line = c.addSeries("one 8-bit step", new double[] {minTime(o), maxTime(o)}, new double[] {step, step});
+        line.setMarker(SeriesMarkers.NONE).setLineColor(Color.GRAY)
+                .setLineStyle(new BasicStroke(1f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, new float[] {4f, 4f}, 0f));
+        if (any) {
+            write(BitmapEncoder.getBufferedImage(c), png);
+        } else {
+            write(note(o.name() + ": every setting matches the reference exactly"), png);
+        }
+    }
+
+    /** The adaptive sampler's own error estimate against its true RMSE, all scenes in one plot. */
+    static boolean honesty(List<SceneStudy.Outcome> outcomes, Path png) throws IOException {
+        XYChart c = new XYChartBuilder().width(760).height(520).title("adaptive: estimated against true image error")
+                .xAxisTitle("true RMSE against the reference (8-bit steps)").yAxisTitle("estimated RMSE (8-bit steps)").build();
+        c.getStyler().setXAxisLogarithmic(true).setYAxisLogarithmic(true).setLegendPosition(Styler.LegendPosition.OutsideE)
+                .setChartBackgroundColor(Color.WHITE).setMarkerSize(7);
+        c.getStyler().setDefaultSeriesRenderStyle(XYSeries.XYSeriesRenderStyle.Scatter);
+        double lo = Double.POSITIVE_INFINITY, hi = 0;
+        boolean any = false;
+        for (SceneStudy.Outcome o : outcomes) {
+            List<double[]> pts = new ArrayList<>();
+            for (Row r : o.rows()) {
+                if (!Double.isNaN(r.estimatedRmseSteps()) && r.rmseSteps() > 0 && r.estimatedRmseSteps() > 0) {
+                    pts.add(new double[] {r.rmseSteps(), r.estimatedRmseSteps()});
+                    lo = Math.min(lo, Math.min(r.rmseSteps(), r.estimatedRmseSteps()));
+                    hi = Math.max(hi, Math.max(r.rmseSteps(), r.estimatedRmseSteps()));
+                }
+            }
+            if (!pts.isEmpty()) {
+                c.addSeries(o.name(), pts.stream().mapToDouble(p -> p[0]).toArray(), pts.stream().mapToDouble(p -> p[1]).toArray());
+                any = true;
+            }
+        }
+        if (!any) {
+            return false;
+        }
+        double[] xs = {lo / 2, hi * 2};
+        guide(c, "estimate = truth", xs, 1, new float[] {1f, 0f});
+        guide(c, "x 1.5", xs, 1.5, new float[] {5f, 4f});
+        guide(c, "/ 1.5", xs, 1 / 1.5, new float[] {5f, 4f});
+        write(BitmapEncoder.getBufferedImage(c), png);
+        return true;
+    }
+
+    private static void guide(XYChart c, String name, double[] xs, double factor, float[] dash) {
+        XYSeries s = c.addSeries(name, xs, new double[] {xs[0] * factor, xs[1] * factor});
+        s.setXYSeriesRenderStyle(XYSeries.XYSeriesRenderStyle.Line);
+        s.setMarker(SeriesMarkers.NONE).setLineColor(Color.DARK_GRAY)
+                .setLineStyle(new BasicStroke(1f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f,
+                        dash[1] == 0 ? null : dash, 0f));
+    }
+
+    /**
+     * The worst region of the cheapest grid render (a square of about a fifth of the image's short side,
+     * where that render's error is largest), cut from every grid setting and the reference and shown
+     * magnified side by side, each labelled with its setting and RMSE over the crop.
+     */
+    static void crops(SceneStudy.Outcome o, Path png) throws IOException {
+        List<Integer> idx = new ArrayList<>();
+        for (int i = 0; i < o.rows().size(); i++) {
+            Row r = o.rows().get(i);
+            if (r.setting().sampler().equals("grid") && !isDepthRow(r, o)) {
+                idx.add(i);
+            }
+        }
+        Image ref = o.reference();
+        int size = Math.max(8, Math.min(48, Math.min(ref.width, ref.height) / 5));
+        int[] at = idx.isEmpty() ? new int[] {0, 0} : worstWindow(ImageError.perPixel(o.images().get(idx.get(0)), ref), ref.width, ref.height, size);
+        int zoom = Math.max(2, 160 / size), cell = size * zoom, label = 34;
+        int cols = idx.size() + 1;
+        BufferedImage out = new BufferedImage(cols * (cell + 8) + 8, cell + label + 16, BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = out.createGraphics();
+        g.setColor(Color.WHITE);
+        g.fillRect(0, 0, out.getWidth(), out.getHeight());
+        g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
+        g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 12));
+        for (int k = 0; k < cols; k++) {
+            Image img = k < idx.size() ? o.images().get(idx.get(k)) : ref;
+            String title = k < idx.size() ? o.rows().get(idx.get(k)).setting().label() : "reference";
+            BufferedImage crop = img.toBufferedImage().getSubimage(at[0], at[1], Math.min(size, ref.width - at[0]), Math.min(size, ref.height - at[1]));
+            int x = 8 + k * (cell + 8);
+            g.setRenderingHint(RenderingHints.KEY_INTERPOLATION, RenderingHints.VALUE_INTERPOLATION_NEAREST_NEIGHBOR);
+            g.drawImage(crop, x, 8, crop.getWidth() * zoom, crop.getHeight() * zoom, null);
+            g.setColor(Color.BLACK);
+            g.drawString(title, x, cell + 24);
+            if (k < idx.size()) {
+                g.drawString(String.format("crop RMSE %.2f steps", cropRmse(img, ref, at, size) / ImageError.STEP), x, cell + 38);
+            }
+        }
+        g.dispose();
+        write(out, png);
+    }
+
+    private static double cropRmse(Image img, Image ref, int[] at, int size) {
+        double s = 0;
+        int n = 0;
+        for (int y = at[1]; y < Math.min(ref.height, at[1] + size); y++) {
+            for (int x = at[0]; x < Math.min(ref.width, at[0] + size); x++) {
+                for (int c = 0; c < 3; c++) {
+                    int i = 3 * (y * ref.width + x) + c;
+                    double d = ImageError.clamp(img.rgb[i]) - ImageError.clamp(ref.rgb[i]);
+                    s += d * d;
+                    n++;
+                }
+            }
+        }
+        return Math.sqrt(s / n);
+    }
+
+    /** Top-left corner of the size x size window with the largest summed error (summed-area table). */
+    static int[] worstWindow(double[] err, int w, int h, int size) {
+        size = Math.min(size, Math.min(w, h));
+        double[] sat = new double[(w + 1) * (h + 1)];
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++) {
+                sat[(y + 1) * (w + 1) + x + 1] = err[y * w + x] + sat[y * (w + 1) + x + 1] + sat[(y + 1) * (w + 1) + x] - sat[y * (w + 1) + x];
+            }
+        }
+        double best = -1;
+        int[] at = {0, 0};
+        for (int y = 0; y + size <= h; y++) {
+            for (int x = 0; x + size <= w; x++) {
+                double s = sat[(y + size) * (w + 1) + x + size] - sat[y * (w + 1) + x + size] - sat[(y + size) * (w + 1) + x] + sat[y * (w + 1) + x];
+                if (s > best) {
+                    best = s;
+                    at = new int[] {x, y};
+                }
+            }
+        }
+        return at;
+    }
+
+    static boolean isDepthRow(Row r, SceneStudy.Outcome o) {
+        return r.setting().label().startsWith("MaxDepth=");
+    }
+
+    private static double minTime(SceneStudy.Outcome o) {
+        return o.rows().stream().mapToDouble(Row::secondsMedian).filter(t -> t > 0).min().orElse(1e-3);
+    }
+
+    private static double maxTime(SceneStudy.Outcome o) {
+        return o.rows().stream().mapToDouble(Row::secondsMedian).max().orElse(1);
+    }
+
+    private static BufferedImage note(String text) {
+        BufferedImage img = new BufferedImage(760, 80, BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = img.createGraphics();
+        g.setColor(Color.WHITE);
+        g.fillRect(0, 0, 760, 80);
+        g.setColor(Color.BLACK);
+        g.drawString(text, 16, 44);
+        g.dispose();
+        return img;
+    }
+
+    static void write(BufferedImage img, Path png) throws IOException {
+        if (!ImageIO.write(img, "png", png.toFile())) {
+            throw new IOException("no PNG writer");
+        }
+    }
+}

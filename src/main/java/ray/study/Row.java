@@ -1,0 +1,36 @@
+package ray.study;
+
+import java.util.Locale;
+
+/** One line of a scene's CSV: a setting, its time over the repeats, its rays and its error. */
+public record Row(Setting setting, double secondsMedian, double secondsMin, double secondsMax, long rays,
+        ImageError error, double estimatedRmseSteps, double meanSpp) {
+
+    /** The CSV header; the columns the issue fixes come first, then the adaptive sampler's own. */
+    public static final String HEADER = "sampler,setting,spp,seconds_median,seconds_min,seconds_max,rays,rmse,psnr_db,"
+            + "max_error,share_off_by_more_than_one,estimated_rmse,max_depth";
+
+    /** The true RMSE in 8-bit steps (the unit of --target-error and of the adaptive estimate). */
+    public double rmseSteps() {
+        return error.rmse / ImageError.STEP;
+    }
+
+    public String csv() {
+        return String.join(",", setting.sampler(), quote(setting.label()), num(meanSpp), num(secondsMedian), num(secondsMin),
+                num(secondsMax), Long.toString(rays), num(error.rmse), num(error.psnrDb), num(error.maxError),
+                num(error.shareOffByMoreThanOneStep),
+                Double.isNaN(estimatedRmseSteps) ? "" : num(estimatedRmseSteps * ImageError.STEP),
+                Integer.toString(setting.maxDepth()));
+    }
+
+    static String num(double v) {
+        if (Double.isInfinite(v)) {
+            return v > 0 ? "inf" : "-inf";
+        }
+        return String.format(Locale.ROOT, "%.6g", v);
+    }
+
+    private static String quote(String s) {
+        return s.contains(",") || s.contains("\"") ? "\"" + s.replace("\"", "\"\"") + "\"" : s;
+    }
+}

@@ -1,0 +1,148 @@
+package ray.study;
+
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import ray.Scene;
+import ray.parse.Parser;
+import ray.parse.SceneFormatException;
+
+/**
+ * {@code raytracer --study scenes/*.txt}: for each scene, renders a converged reference and then every
+ * sampler at every setting ({@link StudySettings}), times them, measures their error, and writes
+ * {@code <scene>.csv}, plots and an {@code index.html} tying them together into the output folder
+ * (default {@code build/reports/accuracy}).
+ */
+public final class Study {
+
+    private final StudyRenderer renderer;
+    private final StudySettings settings;
+    private final int repeats;
+    private final PrintStream out;
+    private final PrintStream err;
+    private final boolean progress;
+
+    public Study(StudyRenderer renderer, StudySettings settings, int repeats, PrintStream out, PrintStream err, boolean progress) {
+        if (repeats < 1) {
+            throw new IllegalArgumentException("repeats must be at least 1");
+        }
+        this.renderer = renderer;
+        this.settings = settings;
+        this.repeats = repeats;
+        this.out = out;
+        this.err = err;
+        this.progress = progress;
+    }
+
+    /** The study as the command line runs it: the built-in renderer on {@code threads} threads, 3 repeats. */
+    public static int run(List<Path> scenes, boolean quick, Path outDir, int threads, PrintStream out, PrintStream err, boolean progress) {
+        return new Study(new RendererAdapter(threads), quick ? StudySettings.QUICK : StudySettings.FULL, 3, out, err, progress)
+                .run(scenes, outDir, quick ? "quick settings" : "full settings");
+    }
+
+    /** Returns 0 when every scene was studied, 1 when any could not be read or rendered. */
+    public int run(List<Path> scenePaths, Path outDir, String mode) {
+        long t0 = System.nanoTime();
+        try {
+            Files.createDirectories(outDir);
+        } catch (IOException e) {
+            err.println(outDir + ": cannot create the report folder (" + e.getMessage() + ")");
+            return 1;
+        }
+        List<String> names = new ArrayList<>();
+        List<Scene> scenes = new ArrayList<>();
+        int failed = 0;
+        for (Path p : scenePaths) {
+            try {
+                scenes.add(Parser.parse(p));
+                String n = p.getFileName().toString();
+                names.add(n.endsWith(".txt") ? n.substring(0, n.length() - 4) : n);
+            } catch (SceneFormatException e) {
+                err.println(e.getMessage());
+                failed++;
+            }
+        }
+        SceneStudy study = new SceneStudy(renderer, settings, repeats);
+        double total = 0;
+        for (Scene s : scenes) {
+            total += study.work(s);
+        }
+        Bar bar = new Bar(total);
+        List<SceneStudy.Outcome> outcomes = new ArrayList<>();
+        for (int i = 0; i < scenes.size(); i++) {
+            String name = names.get(i);
+            bar.label = name;
+            try {
+                SceneStudy.Outcome o = study.run(name, scenes.get(i), bar::advance);
+                outcomes.add(o);
+                Report.csv(o, outDir.resolve(name + ".csv"));
+                Plots.errorVersusTime(o, outDir.resolve(name + "-error-vs-time.png"));
+                Plots.crops(o, outDir.resolve(name + "-crops.png"));
+            } catch (IOException e) {
+                bar.clear();
+                err.println(outDir + ": cannot write the report for " + name + " (" + e.getMessage() + ")");
+                failed++;
+            } catch (RuntimeException | StackOverflowError e) {
+                bar.clear();
+                err.println(scenePaths.get(i) + ": rendering failed: " + e);
+                failed++;
+            }
+        }
+        bar.clear();
+        try {
+            boolean honesty = Plots.honesty(outcomes, outDir.resolve("adaptive-honesty.png"));
+            Report.html(outcomes, honesty, mode, (System.nanoTime() - t0) / 1e9, outDir.resolve("index.html"));
+        } catch (IOException e) {
+            err.println(outDir + ": cannot write index.html (" + e.getMessage() + ")");
+            return 1;
+        }
+        for (SceneStudy.Outcome o : outcomes) {
+            out.println(o.name() + ": " + Report.psnrSentence(o, Report.TARGET_PSNR_DB));
+        }
+        out.println(String.format(Locale.ROOT, "study of %d scene(s) in %.1f s: %s", outcomes.size(),
+                (System.nanoTime() - t0) / 1e9, outDir.resolve("index.html")));
+        return failed == 0 ? 0 : 1;
+    }
+
+    /** A progress bar on stderr by work (samples x pixels), with the time left; drawn only on a terminal. */
+    private final class Bar {
+        private final double total;
+        private final long start = System.nanoTime();
+        private double done;
+        private long lastDraw;
+        private int width;
+        String label = "";
+
+        Bar(double total) {
+            this.total = Math.max(1, total);
+        }
+
+        void advance(double work) {
+            done += work;
+            long now = System.nanoTime();
+            if (!progress || now - lastDraw < 200_000_000L) {
+                return;
+            }
+            lastDraw = now;
+            double f = Math.min(1, done / total), elapsed = (now - start) / 1e9;
+            int filled = (int) Math.round(30 * f);
+            String s = String.format(Locale.ROOT, "study [%s%s] %3.0f%%  %s  %s left", "#".repeat(filled), ".".repeat(30 - filled),
+                    100 * f, label, f > 0.02 ? Report.seconds(elapsed / f - elapsed) + " s" : "?");
+            width = Math.max(width, s.length());
+            err.print("\r" + s + " ".repeat(width - s.length()));
+            err.flush();
+        }
+
+        void clear() {
+            if (width > 0) {
+                err.print("\r" + " ".repeat(width) + "\r");
+                err.flush();
+                width = 0;
+            }
+        }
+    }
+}

@@ -1,0 +1,168 @@
+package ray.render;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.Random;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+import org.junit.jupiter.api.Test;
+
+/** Where each sampler puts its samples: inside the pixel, the promised number, stratified where claimed. */
+class SamplerTest {
+
+    private static final int[] SIDES = {1, 2, 3, 4, 5, 8};
+
+    @ParameterizedTest
+    @ValueSource(strings = {"grid", "jittered", "sobol", "adaptive"})
+    void everyValueLiesInTheUnitIntervalAndDependsOnlyOnItsAddress(String name) {
+        Random rnd = new Random(8);
+        for (int n : SIDES) {
+            Sampler s = Sampler.create(name, n);
+            assertEquals(n * n, s.samplesPerPixel());
+            for (int t = 0; t < 200; t++) {
+                int x = rnd.nextInt(5000) - 100, y = rnd.nextInt(5000), i = rnd.nextInt(n * n), d = rnd.nextInt(12);
+                double v = s.get(x, y, i, d);
+                assertTrue(v >= 0 && v < 1, name + " n=" + n + " (" + x + "," + y + "," + i + "," + d + ") = " + v);
+                assertEquals(v, Sampler.create(name, n).get(x, y, i, d), "a fresh sampler gives the same value");
+            }
+        }
+    }
+
+    /** Grid and jittered put exactly one sample in each of the n x n cells; jittered also in each pair of dimensions. */
+    @ParameterizedTest
+    @ValueSource(strings = {"grid", "jittered", "adaptive"})
+    void oneSamplePerCell(String name) {
+        for (int n : SIDES) {
+            Sampler s = Sampler.create(name, n);
+            int pairs = name.equals("jittered") ? 4 : 1;
+            for (int pair = 0; pair < pairs; pair++) {
+                for (int px = 0; px < 5; px++) {
+                    int[] hits = new int[n * n];
+                    for (int i = 0; i < n * n; i++) {
+                        double u = s.get(px, 3, i, 2 * pair), v = s.get(px, 3, i, 2 * pair + 1);
+                        hits[(int) (v * n) * n + (int) (u * n)]++;
+                    }
+                    for (int c = 0; c < n * n; c++) {
+                        assertEquals(1, hits[c], name + " n=" + n + " pair " + pair + " pixel " + px + ": cell " + c);
+                    }
+                }
+            }
+        }
+    }
+
+    @Test
+    void gridIsTheCellCentresRowByRowAndHalfElsewhere() {
+        Sampler g = Sampler.create("grid", 3);
+        assertEquals(0.5 / 3, g.get(7, 9, 0, 0));
+        assertEquals(2.5 / 3, g.get(7, 9, 5, 0));
+        assertEquals(1.5 / 3, g.get(7, 9, 5, 1));
+        assertEquals(0.5, g.get(7, 9, 5, 2));
+        assertEquals(0.5, g.get(7, 9, 5, 7));
+        // the positions the renderer's grid fast path uses
+        double[] off = new double[18];
+        SamplePattern.GRID.offsets(0, 0, 3, off);
+        for (int i = 0; i < 9; i++) {
+            assertEquals(off[2 * i], g.get(1, 1, i, 0));
+            assertEquals(off[2 * i + 1], g.get(1, 1, i, 1));
+        }
+    }
+
+    /**
+     * Sobol points with 2^m samples per pixel form a (0, m, 2)-net: each box [a/2^k, (a+1)/2^k) x
+     * [b/2^(m-k), (b+1)/2^(m-k)) holds exactly one point, in the pixel position and in later pairs.
+     */
+    @Test
+    void sobolIsANetInEveryPairOfDimensions() {
+        for (int n : new int[] {1, 2, 4, 8}) {
+            Sampler s = Sampler.create("sobol", n);
+            int all = n * n, m = Integer.numberOfTrailingZeros(all);
+            for (int pair = 0; pair < 3; pair++) {
+                for (int px = 0; px < 4; px++) {
+                    for (int k = 0; k <= m; k++) {
+                        int[] hits = new int[all];
+                        for (int i = 0; i < all; i++) {
+                            int a = (int) (s.get(px, 11, i, 2 * pair) * (1 << k));
+                            int b = (int) (s.get(px, 11, i, 2 * pair + 1) * (1 << (m - k)));
+                            hits[b * (1 << k) + a]++;
+                        }
+                        for (int c = 0; c < all; c++) {
+                            assertEquals(1, hits[c], "n=" + n + " pair " + pair + " pixel " + px + " boxes 2^" + k + " x 2^" + (m - k));
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    @Test
+    void pixelsAndPairsAreScrambledDifferently() {
+        for (String name : new String[] {"jittered", "sobol"}) {
+            Sampler s = Sampler.create(name, 4);
+            assertTrue(s.get(0, 0, 3, 0) != s.get(1, 0, 3, 0), name + ": neighbouring pixels share a position");
+            assertTrue(s.get(0, 0, 3, 0) != s.get(0, 0, 3, 2), name + ": pair 1 repeats pair 0");
+        }
+    }
+
+    @Test
+    void adaptiveOrderVisitsEveryCellOnceAndSpreadsTheFirstFour() {
+        for (int n : SIDES) {
+            AdaptiveSampler a = new AdaptiveSampler(n);
+            boolean[] seen = new boolean[n * n];
+            for (int k = 0; k < n * n; k++) {
+                assertTrue(!seen[a.order(k)], "n=" + n + ": cell " + a.order(k) + " twice");
+                seen[a.order(k)] = true;
+            }
+            assertTrue(a.firstBatch() >= Math.min(4, n * n) && a.firstBatch() <= n * n);
+        }
+        AdaptiveSampler a = new AdaptiveSampler(4);
+        boolean[] quadrant = new boolean[4];
+        for (int k = 0; k < 4; k++) {
+            int c = a.order(k);
+            quadrant[(c / 4 / 2) * 2 + c % 4 / 2] = true;
+        }
+        assertTrue(quadrant[0] && quadrant[1] && quadrant[2] && quadrant[3], "the first four samples cover the four quadrants");
+    }
+
+    @Test
+    void permuteIsABijection() {
+        Random rnd = new Random(3);
+        for (int l = 1; l < 300; l++) {
+            int p = rnd.nextInt();
+            boolean[] seen = new boolean[l];
+            for (int i = 0; i < l; i++) {
+                int j = Sampler.permute(i, l, p);
+                assertTrue(j >= 0 && j < l && !seen[j], "l=" + l + " p=" + p + ": " + i + " -> " + j);
+                seen[j] = true;
+            }
+        }
+    }
+
+    @Test
+    void pixelSampleHandsOutAlignedPairsInOrder() {
+        PixelSample ps = new PixelSample();
+        ps.next2D();
+        assertEquals(0.5, ps.u);
+        assertEquals(0.5, ps.v, "outside a render every draw is 0.5");
+        Sampler s = Sampler.create("sobol", 4);
+        ps.start(s, 3, 4, 5);
+        double one = ps.next1D();
+        assertEquals(s.get(3, 4, 5, 2), one);
+        ps.next2D();   // dimension 3 is skipped: pairs start even
+        assertEquals(s.get(3, 4, 5, 4), ps.u);
+        assertEquals(s.get(3, 4, 5, 5), ps.v);
+        assertEquals(6, ps.dimension());
+        ps.start(s, 3, 4, 5);
+        assertEquals(one, ps.next1D(), "a restarted sample draws the same numbers");
+    }
+
+    @Test
+    void unknownNamesAndSizesAreRefused() {
+        assertThrows(IllegalArgumentException.class, () -> Sampler.create("halton", 2));
+        assertThrows(IllegalArgumentException.class, () -> Sampler.create("grid", 0));
+        assertThrows(IllegalArgumentException.class, () -> new RenderSettings().sampler("Grid"));
+        assertThrows(IllegalArgumentException.class, () -> new RenderSettings().targetError(-1));
+        assertThrows(IllegalArgumentException.class, () -> new RenderSettings().samples(65));
+    }
+}
