@@ -142,16 +142,31 @@ class CommandLineProcessTest {
         assertTrue(r.err().startsWith("<stdin> -> <stdout> (4x3, "), r.err());
     }
 
+    /** A scene named @x.txt (as typed, relative) renders like any other: picocli's argument files are off. */
+    @Test
+    void sceneNamedLikeAnArgumentFileRenders() throws Exception {
+        Files.writeString(dir.resolve("@x.txt"), GOOD);
+        Result r = raytracer(null, null, null, "-q", "--threads=1", "@x.txt");     // read by picocli, not the everyday fast path
+        assertEquals(0, r.status(), r.err());
+        assertEquals("", r.err());
+        assertTrue(Files.size(dir.resolve("@x.png")) > 0);
+        Result fast = raytracer(null, null, null, "@x.txt", "-o", "y.png");
+        assertEquals(0, fast.status(), fast.err());
+        assertTrue(Files.size(dir.resolve("y.png")) > 0);
+    }
+
     /** /dev/stdin redirected from a file is read, but no PNG is written into /dev. */
     @Test
     void devStdinAsTheSceneWritesNothingIntoDev() throws Exception {
         Path scene = dir.resolve("a.txt");
         Files.writeString(scene, GOOD);
+        Path devPng = Path.of("/dev/stdin.png");
+        Object before = Files.exists(devPng) ? Files.getLastModifiedTime(devPng) : null;
         Result r = raytracer(null, null, scene.toFile(), "-q", "/dev/stdin");
         assertEquals(1, r.status());
         assertEquals(List.of("/dev/stdin: a PNG beside it would go into /dev; name the image with -o FILE.png, or read the scene "
                 + "from standard input with '-'"), r.errLines());
-        assertFalse(Files.exists(Path.of("/dev/stdin.png")));
+        assertEquals(before, Files.exists(devPng) ? Files.getLastModifiedTime(devPng) : null, "nothing written into /dev");
         Result ok = raytracer(null, null, scene.toFile(), "-q", "/dev/stdin", "-o", "out.png");
         assertEquals(0, ok.status(), ok.err());
         assertTrue(Files.size(dir.resolve("out.png")) > 0);

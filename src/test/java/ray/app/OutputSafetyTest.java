@@ -237,17 +237,9 @@ class OutputSafetyTest {
         assertTrue(Files.exists(foreign), "a name not of our pattern is kept");
     }
 
-    /** A scene named like an argument file, and one named like an option after --, are scenes. */
+    /** A scene named like an option, after --, is a scene (a name starting with @: CommandLineProcessTest). */
     @Test
-    void atNamesAndDashNamesAreScenes() throws IOException {
-        Path at = write("@x.txt", GOOD);
-        Run r = run("-q", at.toString());
-        assertEquals(0, r.status(), r.err());
-        assertTrue(Files.size(dir.resolve("@x.png")) > 0);
-        Path relAt = Path.of("").toAbsolutePath().relativize(at);
-        if (relAt.toString().startsWith("@")) {
-            assertEquals(0, run("-q", relAt.toString()).status());
-        }
+    void dashNamesAfterDoubleDashAreScenes() throws IOException {
         Path dash = write("-d.txt", GOOD);
         Run d = run("-q", "--", dash.toString());
         assertEquals(0, d.status(), d.err());
