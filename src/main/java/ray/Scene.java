@@ -49,6 +49,7 @@ public class Scene {
     private volatile Accelerator accel;
     private volatile RenderPlan plan;
     private Set<Skip> skips = EnumSet.allOf(Skip.class);
+    private boolean cutFaint;
     /** The names objects were given in the scene file ({@code Material Diffuse red}), for messages and the plan. */
     private final Map<Object, String> names = new IdentityHashMap<>();
 
@@ -64,7 +65,7 @@ public class Scene {
             camera.aspect = (double) width / height;
         }
         camera.init();
-        RenderPlan p = RenderPlan.derive(this, skips);
+        RenderPlan p = RenderPlan.derive(this, skips, cutFaint);
         p.apply();
         plan = p;
         accel = Bvh.build(surfaces, this);
@@ -82,6 +83,19 @@ public class Scene {
      */
     public void planSkips(Set<Skip> s) {
         skips = s.isEmpty() ? EnumSet.noneOf(Skip.class) : EnumSet.copyOf(s);
+    }
+
+    /**
+     * Whether the next {@link #prepare()} cuts mirror paths whose remaining weight is below
+     * {@link RenderPlan#FAINT} (off by default: inexact, the {@code --cut-faint} option).
+     */
+    public void planCutFaint(boolean cut) {
+        cutFaint = cut;
+    }
+
+    /** True when the next {@link #prepare()} cuts faint mirror paths ({@link #planCutFaint}). */
+    public boolean cutsFaintPaths() {
+        return cutFaint;
     }
 
     /** Records the name {@code o} has in the scene file. */

@@ -40,6 +40,11 @@ public final class TraceContext {
      * a nested trace off the records still in use.
      */
     public int level;
+    /**
+     * The product of the mirror coefficients along the path being traced (1 for a camera ray); read
+     * only when the plan cuts faint mirror paths (an inexact, opt-in skip: {@code --cut-faint}).
+     */
+    public double pathWeight = 1;
 
     public TraceContext(int maxDepth) {
         grow(maxDepth + 2);

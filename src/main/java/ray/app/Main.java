@@ -66,6 +66,10 @@ public final class Main implements Callable<Integer> {
     @Option(names = "--json", description = "with --plan or --stats: print JSON Lines on stdout instead, one object per scene (docs/json.md)")
     boolean json;
 
+    @Option(names = "--cut-faint", description = "stop mirror paths whose remaining weight (product of k_m) is below half an 8-bit step: "
+            + "faster, not exact (named in --plan)")
+    boolean cutFaint;
+
     @Option(names = "--allow-long", description = "render even a scene whose plan bounds it above 1e11 rays (refused otherwise)")
     boolean allowLong;
 
@@ -239,7 +243,7 @@ public final class Main implements Callable<Integer> {
             return 2;
         }
         if (plan) {
-            return ray.plan.PlanCommand.run(scenes, json, out, err);
+            return ray.plan.PlanCommand.run(scenes, json, cutFaint, out, err);
         }
         if (study) {
             if (scenes.isEmpty() || output != null) {

@@ -145,6 +145,7 @@ final class SceneJob {
         }
         try {
             main.sampling.applyTo(scene);
+            scene.planCutFaint(main.cutFaint);
             if (!ray.plan.CostGate.check(name, scene, main.allowLong, main.threads, main.quiet, err)) {
                 return false;
             }

@@ -87,6 +87,11 @@ public class GlazedMaterial extends Material {
             }
         }
         coefficients = java.util.Arrays.copyOf(ks, n);
+        weight = 0;
+        for (double k : coefficients) {
+            weight += Math.abs(k);
+        }
+        cutFaint = plan.cutsFaintPaths();
         foldedBase = levels.get(levels.size() - 1).base;
         plannedFor = plan.scene();
     }
@@ -95,6 +100,9 @@ public class GlazedMaterial extends Material {
     private Scene plannedFor;
     private Material foldedBase;
     private double[] coefficients;
+    /** With the plan's (inexact) cut of faint paths: the sum of |k| over the folded levels, the mirror ray's weight. */
+    private boolean cutFaint;
+    private double weight;
 
     @Override
     public void shade(Ray ray, IntersectionRecord rec, Scene scene, TraceContext ctx, Vector3d out) {
@@ -109,7 +117,18 @@ public class GlazedMaterial extends Material {
         if (mirrors == 0) {
             return;
         }
-        Vector3d c = scene.traceMirror(ray, rec, ctx);   // null past MaxDepth: adds nothing
+        Vector3d c;
+        if (planned && cutFaint) {   // opt-in, inexact: no ray where the path can no longer move a pixel much
+            double before = ctx.pathWeight, w = before * weight;
+            if (w < RenderPlan.FAINT) {
+                return;
+            }
+            ctx.pathWeight = w;
+            c = scene.traceMirror(ray, rec, ctx);
+            ctx.pathWeight = before;
+        } else {
+            c = scene.traceMirror(ray, rec, ctx);   // null past MaxDepth: adds nothing
+        }
         if (c == null) {
             return;
         }

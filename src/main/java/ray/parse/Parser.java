@@ -447,6 +447,9 @@ public final class Parser {
         line = currentLine;
         try {
             ((SceneObject) o).init();
+            if (o instanceof ReadsFiles r) {
+                readFiles(r);
+            }
         } catch (IllegalArgumentException | IllegalStateException e) {
             throw error(currentType + " " + o.getClass().getSimpleName() + ": " + e.getMessage());
         } catch (RuntimeException | LinkageError | AssertionError | StackOverflowError e) {
@@ -488,6 +491,26 @@ public final class Parser {
                 scene.lights.add((Light) o);
         }
         line = saved;
+    }
+
+    /** Lets an object read its own files; a mistake in one is reported at that file's line, naming this object. */
+    private void readFiles(ReadsFiles r) throws SceneFormatException {
+        try {
+            r.readFiles(folder());
+        } catch (SceneFormatException e) {
+            throw new SceneFormatException(e.file(), e.line(), e.problem() + " (read for the " + currentType + " "
+                    + r.getClass().getSimpleName() + " at " + file + ":" + line + ")");
+        }
+    }
+
+    /** The scene file's folder (the working directory for a scene without one, or read from text). */
+    private Path folder() {
+        try {
+            Path p = Path.of(file).getParent();
+            return p == null ? Path.of("") : p;
+        } catch (java.nio.file.InvalidPathException e) {
+            return Path.of("");
+        }
     }
 
     // ---- globals ----

@@ -19,6 +19,11 @@ public final class PlanCommand {
     }
 
     public static int run(List<Path> scenes, boolean json, PrintStream out, PrintStream err) {
+        return run(scenes, json, false, out, err);
+    }
+
+    /** {@link #run(List, boolean, PrintStream, PrintStream)}, planning the inexact cut of faint mirror paths when {@code cutFaint}. */
+    public static int run(List<Path> scenes, boolean json, boolean cutFaint, PrintStream out, PrintStream err) {
         if (scenes.isEmpty()) {
             err.println("raytracer: --plan needs scene files");
             return 2;
@@ -29,6 +34,7 @@ public final class PlanCommand {
             List<String> warnings = new ArrayList<>();
             try {
                 Scene scene = Parser.parse(p, warnings);
+                scene.planCutFaint(cutFaint);
                 for (String w : warnings) {
                     err.println(w);
                 }
@@ -56,7 +62,7 @@ public final class PlanCommand {
 
     /** The plan of {@code scene} with every exact skip, beside the same scene planned without them. */
     public static PlanReport report(String name, Scene scene) {
-        return new PlanReport(name, RenderPlan.derive(scene, EnumSet.allOf(Skip.class)),
+        return new PlanReport(name, RenderPlan.derive(scene, EnumSet.allOf(Skip.class), scene.cutsFaintPaths()),
                 RenderPlan.derive(scene, RenderPlan.NO_SKIPS));
     }
 }

@@ -70,6 +70,12 @@ public final class PlanReport {
         }
         effects.add(new Effect("area-light samples", lit && !sampled.isEmpty(), sampled.isEmpty() ? "no sampled light"
                 : "per lit point: " + String.join(", ", sampled), null));
+        if (plan.cutsFaintPaths()) {
+            RayBound b = plan.bound();
+            effects.add(new Effect("faint paths cut", true, "inexact, --cut-faint: no mirror ray where the product of k_m along the path"
+                    + " is below 1/510 (half an 8-bit step for radiance up to 1)" + (b.uncutDepth > b.depth
+                    ? "; at most " + b.depth + " of MaxDepth " + b.uncutDepth + " bounces reachable" : "; no bounce provably cut"), null));
+        }
         boolean user = !unknown.isEmpty() || lit && !plan.unknownLights.isEmpty();
         List<String> who = new ArrayList<>();
         for (Material m : unknown) {
@@ -236,7 +242,7 @@ public final class PlanReport {
         bound(j.open("bound"), plan.bound()).close();
         bound(j.open("boundWithoutPlan"), without.bound()).close();
         j.put("totalBound", plan.bound().total()).put("totalBoundWithoutPlan", without.bound().total());
-        j.put("lights", lightLines).put("saved", saved);
+        j.put("cutFaint", plan.cutsFaintPaths()).put("lights", lightLines).put("saved", saved);
         return j.toString();
     }
 

@@ -22,6 +22,8 @@ public final class RayBound {
     /** What the bound was computed from: camera rays, most secondary rays per hit, shadow rays per lit point, MaxDepth. */
     double cameraRays, perPoint;
     int branch, depth;
+    /** With faint paths cut: MaxDepth, of which only {@link #depth} bounces can be reached (-1: nothing cut). */
+    int uncutDepth = -1;
 
     private RayBound() {
     }
@@ -46,6 +48,10 @@ public final class RayBound {
             perPoint += plan.unknownLights.contains(l) ? Double.POSITIVE_INFINITY : l.shadowRaysPerPoint();
         }
         int depth = Math.max(0, scene.maxDepth);
+        if (plan.cutsFaintPaths()) {
+            b.uncutDepth = depth;
+            depth = cutDepth(plan, depth);
+        }
         b.cameraRays = n;
         b.perPoint = perPoint;
         b.branch = branch;
@@ -59,6 +65,30 @@ public final class RayBound {
         b.rays[SHADOW] = direct && perPoint > 0 ? hits * perPoint : 0;
         b.rays[USER] = unknown || direct && !plan.unknownLights.isEmpty() ? Double.POSITIVE_INFINITY : 0;
         return b;
+    }
+
+    /**
+     * The deepest mirror ray a render cutting faint paths can cast: a ray of depth d carries a weight
+     * of at most k^d (k the largest weight one hit gives), and none is cast below {@link RenderPlan#FAINT}.
+     */
+    static int cutDepth(RenderPlan plan, int depth) {
+        double k = 0;
+        for (Shading s : plan.used.values()) {
+            k = Math.max(k, s.weight);
+        }
+        if (!(k < 1)) {
+            return depth;   // refraction, user code or a coefficient >= 1: nothing provably faint
+        }
+        int d = 0;
+        for (double w = 1; d < depth && w * k >= RenderPlan.FAINT; d++) {
+            w *= k;
+        }
+        return d;
+    }
+
+    /** With faint paths cut, the bounces that can still be reached; MaxDepth otherwise. */
+    public int reachableDepth() {
+        return depth;
     }
 
     /** The kind with the largest bound. */

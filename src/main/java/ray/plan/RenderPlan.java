@@ -26,8 +26,16 @@ public final class RenderPlan {
     /** Every exact skip off: the renderer does what it did before the plan. */
     public static final Set<Skip> NO_SKIPS = Collections.unmodifiableSet(EnumSet.noneOf(Skip.class));
 
+    /**
+     * With {@code --cut-faint}, a mirror ray is not cast where the product of the mirror coefficients
+     * along its path is below this: half an 8-bit step for radiance up to 1. Inexact (brighter light
+     * seen at the end of such a path is lost), so opt-in.
+     */
+    public static final double FAINT = 0.5 / 255;
+
     private final Scene scene;
     private final Set<Skip> skips;
+    private final boolean cutFaint;
     private final Light[] lights;
     /** Every material a hit can shade (on surfaces, declared, or a Glazed base), for {@link #apply()}. */
     private final Set<Material> materials;
@@ -37,8 +45,9 @@ public final class RenderPlan {
     final List<Light> dark = new ArrayList<>(), unknownLights = new ArrayList<>();
     final RayBound bound;
 
-    private RenderPlan(Scene scene, Set<Skip> skips) {
+    private RenderPlan(Scene scene, Set<Skip> skips, boolean cutFaint) {
         this.scene = scene;
+        this.cutFaint = cutFaint;
         this.skips = skips.isEmpty() ? NO_SKIPS : Collections.unmodifiableSet(EnumSet.copyOf(skips));
         List<Light> evaluated = new ArrayList<>();
         for (Light l : scene.lights) {
@@ -53,10 +62,13 @@ public final class RenderPlan {
             evaluated.add(l);
         }
         lights = evaluated.toArray(new Light[0]);
-        for (Surface s : scene.surfaces) {
+        java.util.ArrayDeque<Surface> parts = new java.util.ArrayDeque<>(scene.surfaces);
+        while (!parts.isEmpty()) {   // a CSG's operands shade its hits with their own materials
+            Surface s = parts.pop();
             if (s.material != null) {
                 used.computeIfAbsent(s.material, m -> Shading.of(m, this.skips));
             }
+            parts.addAll(s.operands());
         }
         materials = new LinkedHashSet<>(used.keySet());
         materials.addAll(scene.materials);
@@ -72,7 +84,17 @@ public final class RenderPlan {
 
     /** Derives the plan of {@code scene} (its camera already set up) with the given exact skips. */
     public static RenderPlan derive(Scene scene, Set<Skip> skips) {
-        return new RenderPlan(scene, skips);
+        return new RenderPlan(scene, skips, false);
+    }
+
+    /** {@link #derive(Scene, Set)}, cutting faint mirror paths when {@code cutFaint} (inexact: {@link #FAINT}). */
+    public static RenderPlan derive(Scene scene, Set<Skip> skips, boolean cutFaint) {
+        return new RenderPlan(scene, skips, cutFaint);
+    }
+
+    /** True when mirror paths fainter than {@link #FAINT} are cut (the one inexact skip, opt-in). */
+    public boolean cutsFaintPaths() {
+        return cutFaint;
     }
 
     /** Hands the plan to every material ({@link Material#planned}); {@link Scene#prepare()} calls it. */

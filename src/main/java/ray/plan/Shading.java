@@ -25,6 +25,11 @@ final class Shading {
     final boolean pureMirror;
     /** Levels of a Glazed chain folded into one mirror ray (1 where nothing was folded). */
     final int folded;
+    /**
+     * The most a secondary ray's colour is weighted by here (sum of |k_m| of a Glazed chain), or
+     * infinity where secondary rays are not weighted that way (refraction, user code); 0 without any.
+     */
+    double weight;
 
     private Shading(Set<Term> terms, int mirror, int refraction, boolean direct, boolean unknown, boolean pureMirror, int folded) {
         this.terms = terms;
@@ -43,7 +48,9 @@ final class Shading {
             return NONE;
         }
         if (!Trust.material(m)) {
-            return new Shading(EnumSet.allOf(Term.class), 1, 1, true, true, false, 1);
+            Shading unknown = new Shading(EnumSet.allOf(Term.class), 1, 1, true, true, false, 1);
+            unknown.weight = Double.POSITIVE_INFINITY;
+            return unknown;
         }
         Set<Term> terms = m.terms();
         if (m instanceof GlazedMaterial g) {
@@ -57,12 +64,20 @@ final class Shading {
             Material bottom = levels.get(levels.size() - 1).base;
             Shading base = of(bottom, skips);
             int own = skips.contains(Skip.FOLD_GLAZED) ? Math.min(rays, 1) : rays;
-            return new Shading(terms, own + base.mirror, base.refraction, base.direct, base.unknown,
+            double k = 0;
+            for (GlazedMaterial level : levels) {
+                k += Math.abs(level.mirrorCoefficient);
+            }
+            Shading glazed = new Shading(terms, own + base.mirror, base.refraction, base.direct, base.unknown,
                     bottom == null, levels.size());
+            glazed.weight = base.mirror + base.refraction > 0 || base.unknown ? Double.POSITIVE_INFINITY : k;
+            return glazed;
         }
         boolean direct = Term.direct(terms) || m instanceof Diffuse && !skips.contains(Skip.NO_DIRECT_TERM);
-        return new Shading(terms, terms.contains(Term.MIRROR) ? 1 : 0, terms.contains(Term.REFRACTION) ? 1 : 0,
+        Shading other = new Shading(terms, terms.contains(Term.MIRROR) ? 1 : 0, terms.contains(Term.REFRACTION) ? 1 : 0,
                 direct, terms.contains(Term.OWN_RAYS), false, 1);
+        other.weight = other.mirror + other.refraction > 0 || other.unknown ? Double.POSITIVE_INFINITY : 0;
+        return other;
     }
 
     /** True when the material adds k_a I_a somewhere. */

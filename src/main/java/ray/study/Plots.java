@@ -49,7 +49,7 @@ final class Plots {
             if (rs.isEmpty()) {
                 continue;
             }
-            rs.sort((a, b) -> Double.compare(a.secondsMedian(), b.secondsMedian()));
+            // in setting order (more samples, or a deeper MaxDepth, along each curve), not by time, which is noisy
             XYSeries s = c.addSeries(e.getKey(), rs.stream().mapToDouble(Row::secondsMedian).toArray(),
                     rs.stream().mapToDouble(r -> r.error().rmse).toArray());
             s.setMarker(SeriesMarkers.CIRCLE);

@@ -1,12 +1,14 @@
 package ray.study;
 
 import java.util.List;
-import ray.RayStats;
 import ray.Scene;
 import ray.render.Image;
+import ray.render.RenderSettings;
+import ray.render.RenderSummary;
 import ray.render.Renderer;
+import ray.render.Sampler;
 
-/** The study's way into {@link Renderer}: the setting's n_s and MaxDepth on the scene, then one render. */
+/** The study's way into {@link Renderer}: one render with the setting's sampler, n_s, target and MaxDepth. */
 final class RendererAdapter implements StudyRenderer {
 
     private final int threads;
@@ -17,25 +19,19 @@ final class RendererAdapter implements StudyRenderer {
 
     @Override
     public List<String> samplers() {
-        return List.of("grid");
+        return Sampler.NAMES;
     }
 
     @Override
     public Result render(Scene scene, Setting s) {
-        int ns = scene.samplesPerPixel, depth = scene.maxDepth;
-        scene.samplesPerPixel = s.ns();
-        scene.maxDepth = s.maxDepth();
-        try {
-            Renderer r = new Renderer(scene).threads(threads);
-            long t0 = System.nanoTime();
-            Image image = r.render();
-            double seconds = (System.nanoTime() - t0) / 1e9;
-            RayStats rays = new RayStats();
-            rays.add(r.stats());
-            return new Result(image, seconds, rays, Double.NaN, s.budget());
-        } finally {
-            scene.samplesPerPixel = ns;
-            scene.maxDepth = depth;
+        RenderSettings settings = new RenderSettings().sampler(s.sampler()).samples(s.ns()).maxDepth(s.maxDepth());
+        if (s.sampler().equals("adaptive")) {
+            settings.targetError(s.targetError());
         }
+        Renderer r = new Renderer(scene).settings(settings).threads(threads);
+        Image image = r.render();
+        RenderSummary sum = r.summary();
+        return new Result(image, sum.seconds, sum.stats, s.sampler().equals("adaptive") ? sum.estimatedRmse : Double.NaN,
+                sum.meanSamplesPerPixel);
     }
 }

@@ -44,7 +44,7 @@ public final class StudySettings {
         for (String sampler : samplers) {
             if (sampler.equals("adaptive")) {
                 for (double t : targets) {
-                    out.add(new Setting(sampler, "target=" + Row.num(t), maxNs, t, sceneMaxDepth));
+                    out.add(new Setting(sampler, "target=" + (t == Math.rint(t) ? Integer.toString((int) t) : Double.toString(t)), maxNs, t, sceneMaxDepth));
                 }
             } else {
                 for (int ns = 1; ns <= maxNs; ns++) {

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertInstanceOf;
 import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -133,6 +134,14 @@ class CSGSceneTest {
         Scene s = parse(COMMON + csg("u", "union", "a", "b") + csg("v", "difference", "u", "c"));
         assertEquals(3, s.surfaces.size(), "two floor triangles and the outer CSG: " + s.surfaces);
         assertInstanceOf(CSG.class, s.surfaces.get(2));
+    }
+
+    /** The render plan's ray bound counts the operands' materials: b's mirror rays, though the CSG's own material is a's. */
+    @Test
+    void planCountsTheOperandsMaterials() throws SceneFormatException {
+        Scene s = parse(only("a", "b") + csg("u", "union", "a", "b"));
+        s.prepare();
+        assertTrue(ray.plan.RenderPlan.derive(s, ray.plan.RenderPlan.NO_SKIPS).bound().get(ray.RayKind.MIRROR) > 0);
     }
 
     private static String error(String text) {

@@ -1,0 +1,294 @@
+package ray.parse;
+
+import de.javagl.obj.AbstractWritableObj;
+import de.javagl.obj.FloatTuple;
+import de.javagl.obj.ObjFace;
+import de.javagl.obj.ObjReader;
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.InputStreamReader;
+import java.io.Reader;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.AccessDeniedException;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.Arrays;
+
+/**
+ * Reads the polygon part of a Wavefront OBJ file (vertices {@code v}, normals {@code vn}, faces
+ * {@code f} with {@code v}, {@code v/vt}, {@code v//vn} or {@code v/vt/vn} corners, negative indices
+ * counting back) with the de.javagl:obj library, checks what it reads, and splits each face of more
+ * than three corners into a fan (corners 1, k, k+1). Texture coordinates are only counted (their
+ * indices are checked); groups, materials and the other statements of the format are ignored, as
+ * the OBJ specification (Wavefront, Appendix B1 of the Advanced Visualizer manual) allows a
+ * polygon reader to do.
+ *
+ * <p>Every mistake is a {@link SceneFormatException} naming the OBJ file and its line: the library
+ * reads through a reader that counts the lines it hands out, and each statement the library passes on
+ * is checked against the line just read. The library reads coordinates as {@code float}s; they are
+ * kept as such (a double is formed from them exactly).
+ */
+public final class ObjFile {
+
+    /** Vertex positions, 3 floats each. */
+    public final float[] positions;
+    /** Vertex normals from {@code vn}, 3 floats each, as written (not normalised; never zero). */
+    public final float[] normals;
+    /** Triangles: 3 vertex indices (0-based) each, faces fanned, in file order. */
+    public final int[] triangles;
+    /** Per triangle corner the normal index (0-based), or -1; null when no face has normal indices. */
+    public final int[] cornerNormals;
+    /** Polygons read (before fanning). */
+    public final int faces;
+
+    private ObjFile(Builder b) {
+        positions = Arrays.copyOf(b.pos, 3 * b.vertices);
+        normals = Arrays.copyOf(b.nrm, 3 * b.normalCount);
+        triangles = Arrays.copyOf(b.tri, 3 * b.triCount);
+        cornerNormals = b.anyNormals ? Arrays.copyOf(b.triN, 3 * b.triCount) : null;
+        faces = b.faces;
+    }
+
+    public int vertexCount() {
+        return positions.length / 3;
+    }
+
+    public int triangleCount() {
+        return triangles.length / 3;
+    }
+
+    /**
+     * Reads {@code path}, naming it {@code shown} in messages. A file that cannot be opened is an
+     * {@link IllegalArgumentException} (the scene line that names it is at fault); a mistake inside it
+     * a {@link SceneFormatException} at its own line.
+     */
+    public static ObjFile read(Path path, String shown) throws SceneFormatException {
+        if (Files.isDirectory(path)) {
+            throw new IllegalArgumentException("cannot read the OBJ file " + shown + ": it is a directory (expected an OBJ file)");
+        }
+        LineReader reader = null;
+        try (InputStream in = Files.newInputStream(path)) {
+            reader = new LineReader(new InputStreamReader(in, StandardCharsets.UTF_8));
+            Builder b = new Builder(reader, shown);
+            ObjReader.read(reader, b);
+            b.finish();
+            return new ObjFile(b);
+        } catch (NoSuchFileException e) {
+            throw new IllegalArgumentException("cannot read the OBJ file " + shown + ": no such file");
+        } catch (AccessDeniedException e) {
+            throw new IllegalArgumentException("cannot read the OBJ file " + shown + ": permission denied");
+        } catch (Bad e) {
+            throw new SceneFormatException(shown, e.line, e.getMessage());
+        } catch (IOException | RuntimeException e) {
+            // the library's own complaints (a number it cannot read), and anything else it throws on odd input
+            int line = reader == null ? 0 : reader.line;
+            if (reader == null) {
+                throw new IllegalArgumentException("cannot read the OBJ file " + shown + ": " + Parser.describe(e));
+            }
+            throw new SceneFormatException(shown, line, "cannot read " + Values.quote(reader.text.strip()) + " ("
+                    + expected(reader.text) + ")");
+        }
+    }
+
+    /** What a statement of the line's keyword should look like. */
+    static String expected(String line) {
+        String s = line.strip();
+        String key = s.isEmpty() ? "" : s.split("\\s+", 2)[0].toLowerCase();
+        return switch (key) {
+            case "v" -> "expected 'v x y z' with three finite decimal numbers";
+            case "vn" -> "expected 'vn x y z' with three finite decimal numbers";
+            case "vt" -> "expected 'vt u [v [w]]' with decimal numbers";
+            case "f" -> "expected 'f' and at least three corners, each v, v/vt, v//vn or v/vt/vn with non-zero whole-number indices";
+            default -> "expected an OBJ statement such as 'v x y z' or 'f 1 2 3'";
+        };
+    }
+
+    /** A mistake found while checking what the library read, at the reader's current line. */
+    private static final class Bad extends RuntimeException {
+        private static final long serialVersionUID = 1L;
+        final int line;
+
+        Bad(int line, String message) {
+            super(message, null, false, false);
+            this.line = line;
+        }
+    }
+
+    /** Hands the library one line at a time and remembers which (the library reads only through readLine). */
+    private static final class LineReader extends BufferedReader {
+        int line;
+        String text = "";
+
+        LineReader(Reader in) {
+            super(in, 1 << 16);
+        }
+
+        @Override
+        public String readLine() throws IOException {
+            String s = super.readLine();
+            if (s != null) {
+                line++;
+                text = s;
+                if (s.indexOf('\0') >= 0) {
+                    throw new Bad(line, "binary data (byte 0x00), expected a text OBJ file");
+                }
+            }
+            return s;
+        }
+    }
+
+    /** Receives the library's statements, checks them and keeps vertices, normals and fanned faces. */
+    private static final class Builder extends AbstractWritableObj {
+        private final LineReader reader;
+        float[] pos = new float[3 * 1024], nrm = new float[0];
+        int[] tri = new int[3 * 1024], triN = new int[3 * 1024];
+        int vertices, normalCount, texCoords, triCount, faces;
+        boolean anyNormals;
+        /**
+         * Faces referring to vertices not yet read (allowed: checked at the end), each one referring
+         * further than all before it: (line, largest index) pairs. The first face out of range is one
+         * of them.
+         */
+        int[] forward = new int[0];
+        int forwardCount;
+
+        Builder(LineReader reader, String shown) {
+            this.reader = reader;
+        }
+
+        private Bad bad(String message) {
+            return new Bad(reader.line, Values.quote(reader.text.strip()) + " " + message);
+        }
+
+        @Override
+        public void addVertex(FloatTuple v) {
+            if (v.getDimensions() < 3) {
+                throw bad("has " + v.getDimensions() + " coordinate" + (v.getDimensions() == 1 ? "" : "s") + " (expected 'v x y z')");
+            }
+            float x = v.getX(), y = v.getY(), z = v.getZ();
+            if (!Float.isFinite(x) || !Float.isFinite(y) || !Float.isFinite(z)) {
+                throw bad("has a coordinate that is not a finite float (expected 'v x y z', each within +-3.4e38)");
+            }
+            if (3 * vertices + 3 > pos.length) {
+                pos = Arrays.copyOf(pos, 2 * pos.length);
+            }
+            pos[3 * vertices] = x;
+            pos[3 * vertices + 1] = y;
+            pos[3 * vertices + 2] = z;
+            vertices++;
+        }
+
+        @Override
+        public void addNormal(FloatTuple n) {
+            if (n.getDimensions() != 3) {
+                throw bad("has " + n.getDimensions() + " coordinate" + (n.getDimensions() == 1 ? "" : "s") + " (expected 'vn x y z')");
+            }
+            float x = n.getX(), y = n.getY(), z = n.getZ();
+            if (!Float.isFinite(x) || !Float.isFinite(y) || !Float.isFinite(z)) {
+                throw bad("has a coordinate that is not a finite float (expected 'vn x y z')");
+            }
+            if (x == 0 && y == 0 && z == 0) {
+                throw bad("has length 0 (expected 'vn x y z', a direction)");
+            }
+            if (3 * normalCount + 3 > nrm.length) {
+                nrm = Arrays.copyOf(nrm, Math.max(3 * 1024, 2 * nrm.length));
+            }
+            nrm[3 * normalCount] = x;
+            nrm[3 * normalCount + 1] = y;
+            nrm[3 * normalCount + 2] = z;
+            normalCount++;
+        }
+
+        @Override
+        public void addTexCoord(FloatTuple t) {
+            texCoords++;
+        }
+
+        @Override
+        public void addFace(ObjFace f) {
+            int n = f.getNumVertices();
+            if (n < 3) {
+                throw bad("has " + n + " corner" + (n == 1 ? "" : "s") + " (expected a face of at least three: 'f v1 v2 v3 ...')");
+            }
+            checkCorners(n, f.containsNormalIndices(), f.containsTexCoordIndices());
+            int max = -1;
+            for (int i = 0; i < n; i++) {
+                int v = f.getVertexIndex(i);
+                if (v < 0) {
+                    throw bad("refers to a vertex before the first (expected indices 1 to " + vertices
+                            + ", or -1 to -" + vertices + " counting back from this line)");
+                }
+                max = Math.max(max, v);
+                if (f.containsNormalIndices()) {
+                    int vn = f.getNormalIndex(i);
+                    if (vn < 0 || vn >= normalCount) {
+                        throw bad("refers to normal " + (vn + 1) + ", but " + normalCount + " normal"
+                                + (normalCount == 1 ? " is" : "s are") + " given above it (expected 'vn' lines before the face)");
+                    }
+                }
+                if (f.containsTexCoordIndices()) {
+                    int vt = f.getTexCoordIndex(i);
+                    if (vt < 0 || vt >= texCoords) {
+                        throw bad("refers to texture coordinate " + (vt + 1) + ", but " + texCoords + (texCoords == 1 ? " is" : " are")
+                                + " given above it (expected 'vt' lines before the face)");
+                    }
+                }
+            }
+            if (max >= vertices && (forwardCount == 0 || max > forward[2 * forwardCount - 1])) {
+                if (2 * forwardCount + 2 > forward.length) {
+                    forward = Arrays.copyOf(forward, Math.max(16, 2 * forward.length));
+                }
+                forward[2 * forwardCount] = reader.line;
+                forward[2 * forwardCount++ + 1] = max;
+            }
+            faces++;
+            anyNormals |= f.containsNormalIndices();
+            // fan: (0, k, k + 1)
+            for (int k = 1; k + 1 < n; k++) {
+                if (3 * triCount + 3 > tri.length) {
+                    tri = Arrays.copyOf(tri, 2 * tri.length);
+                    triN = Arrays.copyOf(triN, 2 * triN.length);
+                }
+                int o = 3 * triCount++;
+                tri[o] = f.getVertexIndex(0);
+                tri[o + 1] = f.getVertexIndex(k);
+                tri[o + 2] = f.getVertexIndex(k + 1);
+                boolean hasN = f.containsNormalIndices();
+                triN[o] = hasN ? f.getNormalIndex(0) : -1;
+                triN[o + 1] = hasN ? f.getNormalIndex(k) : -1;
+                triN[o + 2] = hasN ? f.getNormalIndex(k + 1) : -1;
+            }
+        }
+
+        /**
+         * Every corner of a face written alike: the library fills the indices a corner leaves out with
+         * those of an earlier face, so {@code f 1//1 2 3} would silently borrow normals.
+         */
+        private void checkCorners(int n, boolean normals, boolean texCoords) {
+            String s = reader.text.strip();
+            String[] corners = s.substring(1).strip().split("\\s+");
+            if (corners.length != n) {
+                return;    // written with spaces around the slashes: the library's own reading stands
+            }
+            for (String c : corners) {
+                int a = c.indexOf('/'), b = a < 0 ? -1 : c.indexOf('/', a + 1);
+                boolean hasT = a >= 0 && (b < 0 ? a + 1 < c.length() : b > a + 1);
+                boolean hasN = b >= 0 && b + 1 < c.length();
+                if (hasT != texCoords || hasN != normals) {
+                    throw bad("writes its corners differently (expected every corner as v, v/vt, v//vn or v/vt/vn alike)");
+                }
+            }
+        }
+
+        void finish() {
+            for (int i = 0; i < forwardCount; i++) {
+                if (forward[2 * i + 1] >= vertices) {
+                    throw new Bad(forward[2 * i], "a face refers to vertex " + (forward[2 * i + 1] + 1) + ", but the file has "
+                            + vertices + " vert" + (vertices == 1 ? "ex" : "ices") + " (expected indices 1 to " + vertices + ")");
+                }
+            }
+        }
+    }
+}
