@@ -376,8 +376,23 @@ public final class Main implements Callable<Integer> {
     static final class Version implements CommandLine.IVersionProvider {
         @Override
         public String[] getVersion() {
+            return new String[] {"raytracer " + version() + " (Java " + System.getProperty("java.version") + ")"};
+        }
+
+        /** The build's version: ray/app/version.txt (written by the build), else the jar's manifest. */
+        static String version() {
+            try (java.io.InputStream in = Main.class.getResourceAsStream("version.txt")) {
+                if (in != null) {
+                    String v = new String(in.readAllBytes(), java.nio.charset.StandardCharsets.UTF_8).trim();
+                    if (!v.isEmpty()) {
+                        return v;
+                    }
+                }
+            } catch (java.io.IOException e) {
+                // fall through to the manifest
+            }
             String v = Main.class.getPackage().getImplementationVersion();
-            return new String[] {"raytracer " + (v == null ? "(development build)" : v)};
+            return v == null ? "(development build: classes not built by Gradle)" : v;
         }
     }
 }
