@@ -118,6 +118,14 @@ public class Scene {
         return a;
     }
 
+    /**
+     * Replaces the acceleration structure until the next {@link #prepare()} (for tools: the benchmark
+     * wraps it to record the rays a render casts).
+     */
+    public void useAccelerator(Accelerator a) {
+        accel = a;
+    }
+
     /** Renders the whole image: {@code [x][y]}, x across, y down from the top row. */
     public Vector3d[][] renderAll() {
         return new Renderer(this).render().toVectors();

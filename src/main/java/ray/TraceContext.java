@@ -5,7 +5,7 @@ import ray.light.LightSample;
 
 /**
  * One render thread's scratch objects: a ray, a hit record and a colour per recursion depth, the
- * shadow ray, the light sample, the traversal stack and the ray counters. Everything the hot path
+ * shadow ray, the light sample, the ray counters and a slot for the accelerator's own scratch. Everything the hot path
  * needs is here, so tracing a ray allocates nothing. Never shared between threads.
  */
 public final class TraceContext {
@@ -17,23 +17,15 @@ public final class TraceContext {
     private Vector3d[] colors = new Vector3d[0];
 
     public final Ray shadowRay = new Ray();
-    public final IntersectionRecord scratchRecord = new IntersectionRecord();
     public final LightSample lightSample = new LightSample();
     public final RayStats stats = new RayStats();
     /** The pixel sample being traced: light and effect code draws its sampler dimensions here (no allocation). */
     public final ray.render.PixelSample sample = new ray.render.PixelSample();
-    /** BVH traversal stack (node indices); 64 levels is deeper than any SAH tree over 2^31 primitives. */
-    public final int[] stack = new int[128];
-    /** Entry distances of the subtrees on {@link #stack} (closest-hit traversal skips those beyond the hit). */
-    public final double[] stackT = new double[128];
-    /** Ray set-up for watertight triangle tests, filled once per ray by the accelerator. */
-    public final double[] rayKernel = new double[ray.surface.Triangle.KERNEL_SIZE];
     /**
-     * Inner nodes visited and primitives tested by this thread's BVH queries, counted only when the JVM
-     * runs with {@code -Dray.bvh.count=true} (the scaling study); otherwise the counting code is
-     * compiled away.
+     * The scene accelerator's own per-thread scratch (for the BVH its {@code RayQuery}: traversal stack,
+     * per-ray set-up); made and used by the accelerator only.
      */
-    public long nodeVisits, primitiveTests;
+    public Object acceleratorScratch;
     /**
      * While framework-style material code runs, the depth of the rays it traces with {@link Scene#trace(Ray)}:
      * one more than the ray it is shading (0 outside such code). Bounds user recursion by MaxDepth and keeps

@@ -95,8 +95,10 @@ public class KernelBench {
     public double triangleHitKernel() {
         double s = 0;
         for (Ray r : rayObjects) {
-            Triangle.setupRay(r, kernel);
-            double t = Triangle.hit(triData, 0, kernel, 0, Double.POSITIVE_INFINITY);
+            Triangle.setupRay(r, kernel, 0);
+            double[] k = kernel;
+            double t = Triangle.hit(triData, 0, (int) k[0], (int) k[1], (int) k[2], k[3], k[4], k[5], k[6], k[7], k[8],
+                    0, Double.POSITIVE_INFINITY, k, 9);
             if (t == t) {
                 s += t;
             }

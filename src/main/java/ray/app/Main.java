@@ -12,7 +12,6 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import ray.Scene;
 import ray.accel.Bvh;
-import ray.bench.Bench;
 import ray.parse.Parser;
 import ray.parse.SceneFormatException;
 import ray.render.Image;
@@ -78,26 +77,6 @@ public final class Main implements Callable<Integer> {
 
     /** What {@link #run} returns when the viewer was opened: the JVM must keep running (no System.exit). */
     public static final int VIEWER_OPEN = -1;
-    @Option(names = "--bench", description = "render the benchmark scenes as whole processes and print the table: wall time, "
-            + "parse/build/render/write, rays by kind, peak memory (docs/performance.md)")
-    boolean bench;
-
-    @Option(names = "--runs", paramLabel = "N", description = "with --bench: timed runs per scene after one warm-up (default ${DEFAULT-VALUE})")
-    int runs = 3;
-
-    @Option(names = "--peers", description = "with --bench: also time the installed peer renderers, interleaved, and compare with Embree")
-    boolean peers;
-
-    @Option(names = "--bench-dir", paramLabel = "DIR", description = "with --bench: the benchmark directory (scenes/, gen/, peers/); "
-            + "default $RAYTRACER_BENCH_DIR or ../shared/bench")
-    Path benchDir;
-
-    @Option(names = "--bench-scenes", paramLabel = "LIST", description = "with --bench: some of classic,mirrors,spheres10k,mesh100k")
-    String benchScenes;
-
-    @Option(names = "--bench-work", paramLabel = "DIR", description = "with --bench: where images, logs and generated scenes go (default: a raytracer-bench directory in the temporary directory)")
-    Path benchWork;
-
     @Option(names = "--study", description = "accuracy study: render each scene with every sampler and setting, time it and "
             + "measure its error against a converged reference; report in --report-dir (default build/reports/accuracy)")
     boolean study;
@@ -235,9 +214,6 @@ public final class Main implements Callable<Integer> {
             err.println("raytracer: " + sampling.problem());
             return 2;
         }
-        if (bench) {
-            return bench();
-        }
         if (json && !plan && !stats) {
             err.println("raytracer: --json goes with --plan or --stats");
             return 2;
@@ -270,26 +246,6 @@ public final class Main implements Callable<Integer> {
             }
         }
         return failed == 0 ? 0 : 1;
-    }
-
-    private int bench() {
-        if (!scenes.isEmpty() || output != null || runs < 1) {
-            err.println("raytracer: --bench takes no scene files and no --output, and --runs must be at least 1");
-            return 2;
-        }
-        try {
-            Path work = benchWork != null ? benchWork : Path.of(System.getProperty("java.io.tmpdir"), "raytracer-bench");
-            return new Bench(out, err, runs, peers, Bench.findBenchDir(benchDir), work, Bench.sceneList(benchScenes)).run();
-        } catch (IllegalArgumentException e) {
-            err.println("raytracer: " + e.getMessage());
-            return 2;
-        } catch (java.io.IOException e) {
-            err.println("raytracer: bench: " + e.getMessage());
-            return 1;
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            return 1;
-        }
     }
 
     /**

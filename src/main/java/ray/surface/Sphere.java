@@ -5,6 +5,7 @@ import ray.IntersectionRecord;
 import ray.Ray;
 import ray.Scene;
 import ray.accel.Aabb;
+import ray.accel.PrimitiveSet;
 
 /**
  * A sphere. Its normal points outward; seen from inside, the record's normal is turned to face the
@@ -50,6 +51,12 @@ public class Sphere extends Surface {
         fill(center.x, center.y, center.z, radius, o.x, o.y, o.z, d.x, d.y, d.z, t, record);
         record.surface = this;
         return true;
+    }
+
+    /** The packed set for exactly this class (a subclass may override {@link #intersects}: it keeps its own). */
+    @Override
+    public PrimitiveSet.Type primitiveType() {
+        return getClass() == Sphere.class ? SphereSet.TYPE : null;
     }
 
     @Override

@@ -55,6 +55,16 @@ public abstract class Surface implements SceneObject {
         out.add(this);
     }
 
+    /**
+     * The packed type the BVH holds this surface in, for a fast path with its own kernel
+     * ({@link ray.accel.PrimitiveSet}); null (the default): the BVH calls {@link #intersects}, which is
+     * all a new primitive needs. Return a type only for your exact class
+     * ({@code getClass() == MyShape.class}), so a subclass overriding {@code intersects} keeps its test.
+     */
+    public ray.accel.PrimitiveSet.Type primitiveType() {
+        return null;
+    }
+
     /** True when the surface can never be hit (e.g. a zero-area triangle); it is left out of the scene. */
     public boolean isDegenerate() {
         return false;

@@ -5,6 +5,7 @@ import ray.IntersectionRecord;
 import ray.Ray;
 import ray.Scene;
 import ray.accel.Aabb;
+import ray.accel.PrimitiveSet;
 
 /**
  * A one-sided triangle: only rays arriving from the side of n = (v1 - v0) x (v2 - v0) hit it (and
@@ -60,14 +61,21 @@ public class Triangle extends Surface {
         }
         double[] v = {v0.x, v0.y, v0.z, v1.x, v1.y, v1.z, v2.x, v2.y, v2.z};
         double[] k = new double[KERNEL_SIZE];
-        setupRay(ray, k);
-        double t = hit(v, 0, k, ray.tMin, ray.tMax);
+        setupRay(ray, k, 0);
+        double t = hit(v, 0, (int) k[0], (int) k[1], (int) k[2], k[SX], k[SY], k[SZ], k[OX], k[OY], k[OZ],
+                ray.tMin, ray.tMax, k, B0);
         if (Double.isNaN(t)) {
             return false;
         }
-        fill(v, 0, k, t, record);
+        fill(v, 0, k, B0, t, record);
         record.surface = this;
         return true;
+    }
+
+    /** The packed set for exactly this class (a subclass may override {@link #intersects}: it keeps its own). */
+    @Override
+    public PrimitiveSet.Type primitiveType() {
+        return getClass() == Triangle.class ? TriangleSet.TYPE : null;
     }
 
     @Override
@@ -79,19 +87,21 @@ public class Triangle extends Surface {
         return b;
     }
 
-    // ---- the watertight kernel, shared with the BVH (vertices packed 9 doubles per triangle) ----
+    // ---- the watertight kernel, the one the BVH uses too (TriangleSet; vertices packed 9 doubles each) ----
 
-    /** Length of the per-ray array used by {@link #setupRay} and {@link #hit}. */
+    /** Length of the per-ray array of {@link #setupRay}: the set-up, then room for the barycentrics. */
     public static final int KERNEL_SIZE = 12;
     /** Relative rounding bound of the edge functions (16 eps; see {@link #hit}). */
     public static final double PARALLEL = 16 * 0x1p-53;
-    private static final int SX = 3, SY = 4, SZ = 5, OX = 6, OY = 7, OZ = 8, B0 = 9, B1 = 10, B2 = 11;
+    /** Offsets in {@link #setupRay}'s output: kx, ky, kz at 0..2, then these. */
+    static final int SX = 3, SY = 4, SZ = 5, OX = 6, OY = 7, OZ = 8, B0 = 9;
 
     /**
-     * Per-ray set-up: kz the dominant axis of the direction, kx and ky the others (swapped when d[kz]
-     * is negative, to keep the winding), the shear constants, and the origin in that axis order.
+     * Per-ray set-up into {@code k[at..at+8]}: kz the dominant axis of the direction, kx and ky the
+     * others (swapped when d[kz] is negative, to keep the winding), the shear constants sx, sy, sz, and
+     * the origin in that axis order.
      */
-    public static void setupRay(Ray ray, double[] k) {
+    public static void setupRay(Ray ray, double[] k, int at) {
         double dx = ray.direction.x, dy = ray.direction.y, dz = ray.direction.z;
         double ax = Math.abs(dx), ay = Math.abs(dy), az = Math.abs(dz);
         int kz = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
@@ -103,16 +113,16 @@ public class Triangle extends Surface {
             kx = ky;
             ky = tmp;
         }
-        k[0] = kx;
-        k[1] = ky;
-        k[2] = kz;
-        k[SX] = component(kx, dx, dy, dz) / dkz;
-        k[SY] = component(ky, dx, dy, dz) / dkz;
-        k[SZ] = 1.0 / dkz;
+        k[at] = kx;
+        k[at + 1] = ky;
+        k[at + 2] = kz;
+        k[at + SX] = component(kx, dx, dy, dz) / dkz;
+        k[at + SY] = component(ky, dx, dy, dz) / dkz;
+        k[at + SZ] = 1.0 / dkz;
         Vector3d o = ray.origin;
-        k[OX] = component(kx, o.x, o.y, o.z);
-        k[OY] = component(ky, o.x, o.y, o.z);
-        k[OZ] = component(kz, o.x, o.y, o.z);
+        k[at + OX] = component(kx, o.x, o.y, o.z);
+        k[at + OY] = component(ky, o.x, o.y, o.z);
+        k[at + OZ] = component(kz, o.x, o.y, o.z);
     }
 
     private static double component(int axis, double x, double y, double z) {
@@ -120,18 +130,17 @@ public class Triangle extends Surface {
     }
 
     /**
-     * The t in [tMin, tMax] where the ray set up in {@code k} hits the front of the triangle stored at
-     * {@code v[off..off+8]}, or NaN. On a hit the barycentric weights are left in {@code k}.
+     * The t in [tMin, tMax] where the ray set up by {@link #setupRay} (kx..okz) hits the front of the
+     * triangle stored at {@code v[off..off+8]}, or NaN. On a hit the barycentric weights of v0, v1, v2
+     * are written to {@code bary[at..at+2]}.
      */
-    public static double hit(double[] v, int off, double[] k, double tMin, double tMax) {
-        int kx = (int) k[0], ky = (int) k[1], kz = (int) k[2];
-        double ox = k[OX], oy = k[OY], oz = k[OZ];
+    public static double hit(double[] v, int off, int kx, int ky, int kz, double sx, double sy, double sz,
+                             double okx, double oky, double okz, double tMin, double tMax, double[] bary, int at) {
         // vertices relative to the origin, in the ray's axis order
-        double ax = v[off + kx] - ox, ay = v[off + ky] - oy, az = v[off + kz] - oz;
-        double bx = v[off + 3 + kx] - ox, by = v[off + 3 + ky] - oy, bz = v[off + 3 + kz] - oz;
-        double cx = v[off + 6 + kx] - ox, cy = v[off + 6 + ky] - oy, cz = v[off + 6 + kz] - oz;
+        double ax = v[off + kx] - okx, ay = v[off + ky] - oky, az = v[off + kz] - okz;
+        double bx = v[off + 3 + kx] - okx, by = v[off + 3 + ky] - oky, bz = v[off + 3 + kz] - okz;
+        double cx = v[off + 6 + kx] - okx, cy = v[off + 6 + ky] - oky, cz = v[off + 6 + kz] - okz;
         // shear so the ray runs along +z
-        double sx = k[SX], sy = k[SY];
         double pax = sx * az, pay = sy * az, pbx = sx * bz, pby = sy * bz, pcx = sx * cz, pcy = sy * cz;
         double qax = ax - pax, qay = ay - pay, qbx = bx - pbx, qby = by - pby, qcx = cx - pcx, qcy = cy - pcy;
         // edge functions; the front side gives all three >= 0
@@ -145,7 +154,6 @@ public class Triangle extends Surface {
         if (!(det > 0)) {
             return Double.NaN;      // ray in the triangle's plane, or seen from behind on an edge
         }
-        double sz = k[SZ];
         double tScaled = sz * (u * az + w0 * bz + w1 * cz);
         if (tScaled < tMin * det || tScaled > tMax * det) {
             return Double.NaN;
@@ -160,15 +168,18 @@ public class Triangle extends Surface {
             return Double.NaN;
         }
         double inv = 1 / det;
-        k[B0] = u * inv;
-        k[B1] = w0 * inv;
-        k[B2] = w1 * inv;
+        bary[at] = u * inv;
+        bary[at + 1] = w0 * inv;
+        bary[at + 2] = w1 * inv;
         return tScaled * inv;
     }
 
-    /** Fills a record for the hit just found by {@link #hit}: point from the barycentrics, unit normal. */
-    public static void fill(double[] v, int off, double[] k, double t, IntersectionRecord rec) {
-        double b0 = k[B0], b1 = k[B1], b2 = k[B2];
+    /**
+     * Fills a record for a hit at t found by {@link #hit} (barycentrics at {@code bary[at..at+2]}): point
+     * from the barycentrics, unit normal, error bound.
+     */
+    public static void fill(double[] v, int off, double[] bary, int at, double t, IntersectionRecord rec) {
+        double b0 = bary[at], b1 = bary[at + 1], b2 = bary[at + 2];
         double x0 = v[off], y0 = v[off + 1], z0 = v[off + 2];
         double x1 = v[off + 3], y1 = v[off + 4], z1 = v[off + 5];
         double x2 = v[off + 6], y2 = v[off + 7], z2 = v[off + 8];

@@ -190,7 +190,7 @@ public final class Scaling {
         if (args.length == 2 && args[0].equals("--count")) {
             Diffuse m = new Diffuse();
             Throughput t = new Throughput(scene(mesh(Integer.parseInt(args[1]), m), m));
-            double[] c = t.workPerRay(Throughput.Kind.CAMERA), s = t.workPerRay(Throughput.Kind.SHADOW);
+            double[] c = t.workPerRay(ray.RayKind.CAMERA), s = t.workPerRay(ray.RayKind.SHADOW);
             System.out.println(String.format(Locale.ROOT, "%.3f %.3f %.3f %.3f", c[0], c[1], s[0], s[1]));
             return;
         }

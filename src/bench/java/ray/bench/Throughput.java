@@ -6,38 +6,25 @@ import java.util.Arrays;
 import javax.vecmath.Vector3d;
 import ray.IntersectionRecord;
 import ray.Ray;
+import ray.RayKind;
 import ray.Scene;
 import ray.TraceContext;
 import ray.accel.Accelerator;
-import ray.light.Light;
-import ray.light.LightSample;
-import ray.material.GlazedMaterial;
 
 /**
  * In-process ray throughput of the acceleration structure alone, by ray kind, the way
- * {@code embree_rays.py} measures Embree: one camera ray per pixel centre; the shadow rays those
- * camera rays' hits send to each light (only where the light is in front of the surface, as the
- * renderer does); the mirror rays they send off glazed surfaces. Camera and mirror rays take the
- * closest-hit query (with the hit record filled in, as the renderer needs it), shadow rays the any-hit
- * query. One thread, timed after warm-up passes so the JIT has compiled the traversal; no shading.
+ * {@code embree_rays.py} measures Embree: one camera ray per pixel centre, and every ray the renderer
+ * casts while shading them (shadow, mirror, refraction, user rays), recorded from a real render of those
+ * camera rays with {@link RayKind} told by the ray-query layer's own counters (so no shading rule is
+ * repeated here). Camera, mirror, refraction and user rays take the closest-hit query (with the hit
+ * record filled in, as the renderer needs it), shadow rays the any-hit query. One thread, timed after
+ * warm-up passes so the JIT has compiled the traversal; no shading.
  */
 public final class Throughput {
 
-    /** The three kinds of ray a Whitted renderer casts. */
-    public enum Kind {
-        CAMERA("camera", true), SHADOW("shadow", false), MIRROR("mirror", true);
-
-        final String label;
-        final boolean closest;
-
-        Kind(String label, boolean closest) {
-            this.label = label;
-            this.closest = closest;
-        }
-
-        public String label() {
-            return label;
-        }
+    /** The query the renderer uses for rays of {@code kind}: closest hit, except any hit for shadow rays. */
+    static boolean closest(RayKind kind) {
+        return kind != RayKind.SHADOW;
     }
 
     /**
@@ -45,12 +32,12 @@ public final class Throughput {
      * class, not a record: Gradle 4.4.1's class reader calls record classes malformed.)
      */
     public static final class Rate {
-        private final Kind kind;
+        private final RayKind kind;
         private final String query;
         private final int rays, hits;
         private final double medianSeconds, bestSeconds, cpuSeconds;
 
-        Rate(Kind kind, String query, int rays, double medianSeconds, double bestSeconds, int hits, double cpuSeconds) {
+        Rate(RayKind kind, String query, int rays, double medianSeconds, double bestSeconds, int hits, double cpuSeconds) {
             this.kind = kind;
             this.query = query;
             this.rays = rays;
@@ -60,7 +47,7 @@ public final class Throughput {
             this.cpuSeconds = cpuSeconds;
         }
 
-        public Kind kind() {
+        public RayKind kind() {
             return kind;
         }
 
@@ -96,55 +83,74 @@ public final class Throughput {
     private static final int STRIDE = 8;   // ox oy oz dx dy dz tMin tMax
 
     private final Scene scene;
-    private final double[][] sets = new double[Kind.values().length][];
+    private final double[][] sets = new double[RayKind.values().length][];
 
     public Throughput(Scene scene) {
         this.scene = scene;
         scene.prepare();
-        int w = scene.width, h = scene.height;
-        double[] camera = new double[STRIDE * w * h];
-        Ray r = new Ray();
-        for (int y = 0, i = 0; y < h; y++) {
-            for (int x = 0; x < w; x++, i += STRIDE) {
-                scene.camera.setRayThrough(r, x + 0.5, y + 0.5, w, h);
-                put(camera, i, r);
-            }
-        }
-        sets[Kind.CAMERA.ordinal()] = camera;
-        // secondary rays from the camera rays' hits, spawned exactly as the renderer spawns them
         Accelerator accel = scene.accelerator();
+        Recorder recorder = new Recorder(accel);
         TraceContext ctx = new TraceContext(scene.maxDepth);
-        IntersectionRecord rec = new IntersectionRecord();
-        LightSample s = new LightSample();
-        Ray shadow = new Ray(), mirror = new Ray();
-        Grow shadows = new Grow(), mirrors = new Grow();
-        for (int i = 0; i < camera.length; i += STRIDE) {
-            get(camera, i, r);
-            if (!accel.closestHit(r, rec, ctx)) {
-                continue;
-            }
-            Vector3d n = rec.normal;
-            for (Light light : scene.lights) {
-                for (int k = 0, c = light.sampleCount(); k < c; k++) {
-                    if (!light.sample(rec, scene, k, s) || s.shadowTested) {
-                        continue;
-                    }
-                    Vector3d l = s.direction;
-                    if (n.x * l.x + n.y * l.y + n.z * l.z > 0) {
-                        rec.spawnRayTo(s.position.x, s.position.y, s.position.z, shadow);
-                        shadows.add(shadow);
-                    }
+        TraceContext.bind(ctx);   // a user's class tracing through Scene.trace counts on this context too
+        scene.useAccelerator(recorder);
+        try {
+            int w = scene.width, h = scene.height;
+            Ray r = new Ray();
+            Vector3d color = new Vector3d();
+            for (int y = 0; y < h; y++) {
+                for (int x = 0; x < w; x++) {
+                    scene.camera.setRayThrough(r, x + 0.5, y + 0.5, w, h);
+                    scene.traceCamera(r, ctx, color);
                 }
             }
-            if (rec.surface.material instanceof GlazedMaterial g && g.mirrorCoefficient != 0 && scene.maxDepth > 0) {
-                Vector3d d = r.direction;
-                double dn = 2 * (d.x * n.x + d.y * n.y + d.z * n.z);
-                rec.spawnRay(d.x - dn * n.x, d.y - dn * n.y, d.z - dn * n.z, mirror);
-                mirrors.add(mirror);
+        } finally {
+            scene.useAccelerator(accel);
+            TraceContext.bind(null);
+        }
+        for (RayKind k : RayKind.values()) {
+            sets[k.ordinal()] = recorder.rays[k.ordinal()].toArray();
+        }
+    }
+
+    /**
+     * Passes every query on to the real accelerator and keeps a copy of its ray under the kind whose
+     * count in the thread's {@link ray.RayStats} has just gone up (the ray-query layer counts a ray right
+     * before it asks the accelerator).
+     */
+    private static final class Recorder implements Accelerator {
+        final Accelerator inner;
+        final Grow[] rays = new Grow[RayKind.values().length];
+        final long[] seen = new long[RayKind.values().length];
+
+        Recorder(Accelerator inner) {
+            this.inner = inner;
+            for (int i = 0; i < rays.length; i++) {
+                rays[i] = new Grow();
             }
         }
-        sets[Kind.SHADOW.ordinal()] = shadows.toArray();
-        sets[Kind.MIRROR.ordinal()] = mirrors.toArray();
+
+        private void record(Ray ray, TraceContext ctx) {
+            for (RayKind k : RayKind.values()) {
+                long n = ctx.stats.get(k);
+                if (n != seen[k.ordinal()]) {
+                    seen[k.ordinal()] = n;
+                    rays[k.ordinal()].add(ray);
+                    return;
+                }
+            }
+        }
+
+        @Override
+        public boolean closestHit(Ray ray, IntersectionRecord rec, TraceContext ctx) {
+            record(ray, ctx);
+            return inner.closestHit(ray, rec, ctx);
+        }
+
+        @Override
+        public boolean anyHit(Ray ray, TraceContext ctx) {
+            record(ray, ctx);
+            return inner.anyHit(ray, ctx);
+        }
     }
 
     private static final class Grow {
@@ -175,38 +181,39 @@ public final class Throughput {
     }
 
     /** Number of rays of {@code kind} in this scene's sets (pixel centres and the rays they spawn). */
-    public int rayCount(Kind kind) {
+    public int rayCount(RayKind kind) {
         return sets[kind.ordinal()].length / STRIDE;
     }
 
     /** Closest-hit rate on the camera rays (the Embree comparison). */
     public Rate closestHit(int warmups, int passes) {
-        return run(Kind.CAMERA, true, warmups, passes);
+        return run(RayKind.CAMERA, true, warmups, passes);
     }
 
     /** Any-hit rate on the camera rays with t up to infinity (as embree_rays.py's rtcOccluded1). */
     public Rate anyHit(int warmups, int passes) {
-        return run(Kind.CAMERA, false, warmups, passes);
+        return run(RayKind.CAMERA, false, warmups, passes);
     }
 
     /** The rate of one kind with the query the renderer uses for it; null when the scene casts none. */
-    public Rate measure(Kind kind, int warmups, int passes) {
-        return rayCount(kind) == 0 ? null : run(kind, kind.closest, warmups, passes);
+    public Rate measure(RayKind kind, int warmups, int passes) {
+        return rayCount(kind) == 0 ? null : run(kind, closest(kind), warmups, passes);
     }
 
     /**
      * Inner-node visits and primitive tests per ray of one pass over the rays of {@code kind}: counted
      * only in a JVM started with {@code -Dray.bvh.count=true} (zeros otherwise).
      */
-    public double[] workPerRay(Kind kind) {
+    public double[] workPerRay(RayKind kind) {
         double[] rays = sets[kind.ordinal()];
         TraceContext ctx = new TraceContext(scene.maxDepth);
-        pass(scene.accelerator(), ctx, new Ray(), new IntersectionRecord(), rays, kind.closest);
+        pass(scene.accelerator(), ctx, new Ray(), new IntersectionRecord(), rays, closest(kind));
         double n = Math.max(1, rays.length / STRIDE);
-        return new double[] {ctx.nodeVisits / n, ctx.primitiveTests / n};
+        ray.accel.Bvh bvh = (ray.accel.Bvh) scene.accelerator();
+        return new double[] {bvh.nodeVisits(ctx) / n, bvh.primitiveTests(ctx) / n};
     }
 
-    private Rate run(Kind kind, boolean closest, int warmups, int passes) {
+    private Rate run(RayKind kind, boolean closest, int warmups, int passes) {
         double[] rays = sets[kind.ordinal()];
         Accelerator accel = scene.accelerator();
         TraceContext ctx = new TraceContext(scene.maxDepth);
@@ -250,7 +257,7 @@ public final class Throughput {
 
     /**
      * {@code java ray.bench.Throughput scene.txt [passes]}: prints the rates. With {@code --row NAME
-     * scene.txt}: one Markdown table row (camera, shadow, mirror, camera any-hit; median Mrays/s), and
+     * scene.txt}: one Markdown table row (each RayKind, then camera any-hit; median Mrays/s), and
      * with {@code --camera scene.txt}: "closest MEDIAN BEST" and "any MEDIAN BEST" lines for the
      * camera rays (what {@code raytracer --bench} reads from the JVMs it starts).
      */
@@ -258,7 +265,7 @@ public final class Throughput {
         if (args[0].equals("--row")) {
             Throughput t = new Throughput(ray.parse.Parser.parse(java.nio.file.Path.of(args[2])));
             StringBuilder row = new StringBuilder("| " + args[1] + " |");
-            for (Kind k : Kind.values()) {
+            for (RayKind k : RayKind.values()) {
                 Rate r = t.measure(k, 3, 7);
                 row.append(r == null ? " - |" : String.format(java.util.Locale.ROOT, " %.2f |", r.mraysPerSecond()));
             }
@@ -282,10 +289,10 @@ public final class Throughput {
         Throughput t = new Throughput(s);
         print(t.closestHit(3, passes), "camera rays");
         print(t.anyHit(3, passes), "camera rays");
-        for (Kind k : new Kind[] {Kind.SHADOW, Kind.MIRROR}) {
-            Rate r = t.measure(k, 3, passes);
+        for (RayKind k : RayKind.values()) {
+            Rate r = k == RayKind.CAMERA ? null : t.measure(k, 3, passes);
             if (r != null) {
-                print(r, k.label + " rays");
+                print(r, k.key() + " rays");
             }
         }
     }

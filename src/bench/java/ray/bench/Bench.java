@@ -2,8 +2,6 @@ package ray.bench;
 
 import java.io.IOException;
 import java.io.PrintStream;
-import java.lang.management.ManagementFactory;
-import java.net.URISyntaxException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -52,8 +50,11 @@ public final class Bench {
     private final Path benchDir;
     private final Path work;
     private final List<String> scenes;
+    /** The command that starts the installed program (its launcher). */
+    private final List<String> self;
 
-    public Bench(PrintStream out, PrintStream err, int runs, boolean withPeers, Path benchDir, Path work, List<String> scenes) {
+    public Bench(PrintStream out, PrintStream err, int runs, boolean withPeers, Path benchDir, Path work, List<String> scenes,
+                 List<String> self) {
         this.out = out;
         this.err = err;
         this.runs = runs;
@@ -61,6 +62,59 @@ public final class Bench {
         this.benchDir = benchDir;
         this.work = work;
         this.scenes = scenes;
+        this.self = self;
+    }
+
+    /**
+     * {@code gradle bench}: {@code ray.bench.Bench --launcher PATH [--runs N] [--peers] [--bench-dir DIR]
+     * [--bench-scenes LIST] [--bench-work DIR]}; the launcher is the installed {@code bin/raytracer}.
+     */
+    public static void main(String[] args) {
+        System.exit(run(System.out, System.err, args));
+    }
+
+    static int run(PrintStream out, PrintStream err, String... args) {
+        int runs = 3;
+        boolean peers = false;
+        Path benchDir = null, work = defaultWork();
+        String list = null, launcher = null;
+        try {
+            for (int i = 0; i < args.length; i++) {
+                String a = args[i];
+                if (a.equals("--peers")) {
+                    peers = true;
+                    continue;
+                }
+                if (i + 1 >= args.length) {
+                    throw new IllegalArgumentException("unknown option or missing value: " + a);
+                }
+                String v = args[++i];
+                switch (a) {
+                    case "--runs" -> runs = Integer.parseInt(v);
+                    case "--bench-dir" -> benchDir = Path.of(v);
+                    case "--bench-scenes" -> list = v;
+                    case "--bench-work" -> work = Path.of(v);
+                    case "--launcher" -> launcher = v;
+                    default -> throw new IllegalArgumentException("unknown option " + a);
+                }
+            }
+            if (runs < 1) {
+                throw new IllegalArgumentException("--runs must be at least 1");
+            }
+            if (launcher == null || !Files.isExecutable(Path.of(launcher))) {
+                throw new IllegalArgumentException("--launcher must name the installed bin/raytracer (gradle bench does)");
+            }
+            return new Bench(out, err, runs, peers, findBenchDir(benchDir), work, sceneList(list), List.of(launcher)).run();
+        } catch (IllegalArgumentException e) {
+            err.println("bench: " + e.getMessage());
+            return 2;
+        } catch (IOException e) {
+            err.println("bench: " + e.getMessage());
+            return 1;
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return 1;
+        }
     }
 
     /** The bench directory to use: the option, $RAYTRACER_BENCH_DIR, or ../shared/bench or shared/bench from here. */
@@ -107,14 +161,13 @@ public final class Bench {
                     file.flush();
                 }
             }, true, StandardCharsets.UTF_8);
-            return new Bench(both, err, runs, withPeers, benchDir, work, scenes).report();
+            return new Bench(both, err, runs, withPeers, benchDir, work, scenes, self).report();
         }
     }
 
     private int report() throws IOException, InterruptedException {
         Path sceneDir = sceneDirectory();
-        List<String> self = selfCommand();
-        out.println("# raytracer --bench");
+        out.println("# gradle bench");
         out.println();
         out.println("- command: `" + String.join(" ", self) + " -q --stats SCENE -o PNG`");
         out.println("- scenes: " + sceneDir.toAbsolutePath().normalize());
@@ -223,27 +276,6 @@ public final class Bench {
 
     // ---- processes ----
 
-    /** How to start this program again: the installed launcher when there is one, else this JVM's command. */
-    static List<String> selfCommand() {
-        try {
-            Path jar = Path.of(Bench.class.getProtectionDomain().getCodeSource().getLocation().toURI());
-            Path launcher = jar.getParent().getParent().resolve("bin/raytracer");
-            if (Files.isRegularFile(jar) && Files.isExecutable(launcher)) {
-                return List.of(launcher.toString());
-            }
-        } catch (URISyntaxException | RuntimeException e) {
-            // fall through
-        }
-        List<String> cmd = new ArrayList<>();
-        cmd.add(ProcessHandle.current().info().command().orElse("java"));
-        for (String a : ManagementFactory.getRuntimeMXBean().getInputArguments()) {
-            if (!a.startsWith("-agentlib") && !a.startsWith("-javaagent") && !a.startsWith("-Xrunjdwp")) {
-                cmd.add(a);
-            }
-        }
-        cmd.addAll(List.of("-cp", System.getProperty("java.class.path"), "RayTracer"));
-        return cmd;
-    }
 
     /** Wall seconds of one run of {@code cmd} (stdout and stderr to {@code log}); -1 when it failed. */
     private static double time(List<String> cmd, Path dir, Path log) throws IOException, InterruptedException {
@@ -423,11 +455,20 @@ public final class Bench {
         out.println();
     }
 
+    /** The installed launcher's JVM options, as build.gradle hands them to this JVM (ray.bench.launcherJvmArgs). */
+    private static List<String> launcherJvmArgs() {
+        String a = System.getProperty("ray.bench.launcherJvmArgs", "-XX:+UseParallelGC -XX:TieredStopAtLevel=1").trim();
+        return List.of(a.split("\\s+"));
+    }
+
     /** A JVM like this one (its class path), running {@code ray.bench.Throughput} with the given JIT. */
     private static List<String> throughputCommand(boolean fullJit, String... args) {
-        List<String> cmd = new ArrayList<>(List.of(ProcessHandle.current().info().command().orElse("java"),
-                "-XX:+UseParallelGC", fullJit ? "-XX:TieredStopAtLevel=4" : "-XX:TieredStopAtLevel=1",
-                "-cp", System.getProperty("java.class.path"), "ray.bench.Throughput"));
+        List<String> cmd = new ArrayList<>(List.of(ProcessHandle.current().info().command().orElse("java")));
+        cmd.addAll(launcherJvmArgs());
+        if (fullJit) {
+            cmd.add("-XX:TieredStopAtLevel=4");   // the last one wins
+        }
+        cmd.addAll(List.of("-cp", System.getProperty("java.class.path"), "ray.bench.Throughput"));
         cmd.addAll(List.of(args));
         return cmd;
     }
@@ -435,13 +476,18 @@ public final class Bench {
     private void printKindTable(Path sceneDir) throws IOException, InterruptedException {
         out.println("## Rays per second by kind, acceleration structure alone (1 thread, after warm-up)");
         out.println();
-        out.println("Camera rays at pixel centres (closest hit with the hit record filled in), the shadow rays their hits "
-                + "send to the lights (any hit), the mirror rays they send off glazed surfaces (closest hit); median of 7 "
-                + "passes, Mrays/s, each scene in a fresh JVM. C1: the launcher's JIT setting (-XX:TieredStopAtLevel=1); "
-                + "C2: the full JIT, for the steady state of a long render.");
+        out.println("Camera rays at pixel centres (closest hit with the hit record filled in) and every ray a render of "
+                + "them casts, recorded by kind (shadow rays: any hit; the others: closest hit); median of 7 "
+                + "passes, Mrays/s, each scene in a fresh JVM. C1: the launcher's JVM options (" + String.join(" ", launcherJvmArgs())
+                + "); C2: the full JIT, for the steady state of a long render.");
         out.println();
-        out.println("| scene, JIT | camera | shadow | mirror | camera rays, any hit |");
-        out.println("|---|---:|---:|---:|---:|");
+        StringBuilder head = new StringBuilder("| scene, JIT |"), rule = new StringBuilder("|---|");
+        for (ray.RayKind k : ray.RayKind.values()) {
+            head.append(' ').append(k.key()).append(" |");
+            rule.append("---:|");
+        }
+        out.println(head + " camera rays, any hit |");
+        out.println(rule + "---:|");
         for (String s : scenes) {
             for (boolean c2 : new boolean[] {false, true}) {
                 Path log = work.resolve("throughput.log");

@@ -1,0 +1,84 @@
+package ray.accel;
+
+import ray.IntersectionRecord;
+import ray.Ray;
+import ray.Scene;
+
+/**
+ * One ray query in progress, and one thread's scratch for it: the BVH fills the ray's fields, the
+ * primitive sets ({@link PrimitiveSet}) test their primitives against them and offer hits. Owned by
+ * the accelerator, one per thread (kept in {@link ray.TraceContext#acceleratorScratch}); never shared.
+ */
+public final class RayQuery {
+
+    /** The ray being traced (origin, direction) and the span still searched: [tMin, tMax]. */
+    public double ox, oy, oz, dx, dy, dz, tMin, tMax;
+    /** The ray itself and the scene, for surfaces tested through their own {@code intersects}. */
+    public Ray ray;
+    public Scene scene;
+    /**
+     * The caller's record (closest-hit queries; a user surface fills it at once) or, for any-hit
+     * queries, {@link #scratchRecord}.
+     */
+    public IntersectionRecord record;
+    public final IntersectionRecord scratchRecord = new IntersectionRecord();
+    /**
+     * Per primitive set, {@link PrimitiveSet#SCRATCH} doubles of per-ray set-up at
+     * {@code scratch[set.id() * SCRATCH]}, valid while bit {@code set.id()} of {@link #setUp} is on
+     * (cleared at the start of every query), and the winning hit's data at {@link #hitData}.
+     */
+    public double[] scratch;
+    public int setUp;
+    /** What the closest hit's {@link PrimitiveSet#fill} needs besides t (barycentrics, say). */
+    public final double[] hitData = new double[PrimitiveSet.SCRATCH];
+
+    PrimitiveSet hitSet;
+    int hitIndex, hitSlot;
+
+    /** Traversal stack of node references, and (closest hit) their entry distances. */
+    final int[] stack = new int[128];
+    final double[] stackT = new double[128];
+    final Bvh owner;
+    /** Inner nodes visited and primitives tested (counted only with -Dray.bvh.count=true). */
+    long nodeVisits, primitiveTests;
+
+    RayQuery(Bvh owner, int sets) {
+        this.owner = owner;
+        this.scratch = new double[Math.max(1, sets) * PrimitiveSet.SCRATCH];
+    }
+
+    void start(Ray r, Scene s, IntersectionRecord rec) {
+        ray = r;
+        scene = s;
+        record = rec;
+        ox = r.origin.x; oy = r.origin.y; oz = r.origin.z;
+        dx = r.direction.x; dy = r.direction.y; dz = r.direction.z;
+        tMin = r.tMin;
+        tMax = r.tMax;
+        setUp = 0;
+        hitSet = null;
+        hitSlot = Integer.MAX_VALUE;
+    }
+
+    /**
+     * A closest-hit candidate at t (already known to be in [tMin, tMax]) from primitive {@code index} of
+     * {@code set}, in leaf slot {@code slot}: taken when nearer than the best so far, or as near and in an
+     * earlier slot (so ties do not depend on the order of tests). Returns whether it was taken; then
+     * {@link #tMax} is t and the set should leave what its fill needs in {@link #hitData}.
+     */
+    public boolean offer(double t, PrimitiveSet set, int index, int slot) {
+        if (t < tMax || (t == tMax && slot < hitSlot)) {
+            take(t, set, index, slot);
+            return true;
+        }
+        return false;
+    }
+
+    /** Takes a hit unconditionally (a user surface that has filled the record already). */
+    void take(double t, PrimitiveSet set, int index, int slot) {
+        tMax = t;
+        hitSet = set;
+        hitIndex = index;
+        hitSlot = slot;
+    }
+}
