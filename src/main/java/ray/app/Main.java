@@ -36,16 +36,12 @@ public final class Main implements Callable<Integer> {
     @Parameters(paramLabel = "SCENE", description = "scene files (.txt) to render")
     List<Path> scenes = new ArrayList<>();
 
+    /** --output as typed: Path drops a trailing '/', which says "a folder". */
     @Option(names = {"-o", "--output"}, paramLabel = "PNG", description = "where to write the image: a file (one scene), an existing folder (each scene's PNG in it) "
             + "or '-' (standard output)")
-    void output(String o) {
-        outputArg = o;
-        output = Path.of(o);
-    }
-
-    Path output;
-    /** --output as typed: Path drops a trailing '/', which says "a folder". */
     String outputArg;
+    /** --output as a path (set from outputArg when the command runs). */
+    Path output;
 
     @Option(names = {"-j", "--threads"}, paramLabel = "N", description = "render threads (default: all cores, ${DEFAULT-VALUE})")
     int threads = Runtime.getRuntime().availableProcessors();
@@ -97,13 +93,20 @@ public final class Main implements Callable<Integer> {
     }
 
     public static int run(PrintStream out, PrintStream err, String... args) {
+        return run(System.in, out, err, args);
+    }
+
+    /** As {@link #run(PrintStream, PrintStream, String...)}, reading the scene '-' from {@code in}. */
+    static int run(java.io.InputStream in, PrintStream out, PrintStream err, String... args) {
         Main simple = simpleCommandLine(args);
         if (simple != null) {
+            simple.in = in;
             simple.out = out;
             simple.err = err;
             return simple.call();
         }
         Main main = new Main();
+        main.in = in;
         main.out = out;
         main.err = err;
         CommandLine cl = new CommandLine(main);
@@ -163,7 +166,8 @@ public final class Main implements Callable<Integer> {
                         if (m.output != null || i + 1 == args.length || !plainWord(args[i + 1])) {
                             return null;
                         }
-                        m.output(args[++i]);
+                        m.outputArg = args[++i];
+                        m.output = Path.of(m.outputArg);
                     }
                     case "-j", "--threads" -> {
                         if (threadsSet || i + 1 == args.length || !smallNumber(args[i + 1])) {
@@ -206,6 +210,14 @@ public final class Main implements Callable<Integer> {
 
     @Override
     public Integer call() {
+        if (outputArg != null) {
+            try {
+                output = Path.of(outputArg);
+            } catch (java.nio.file.InvalidPathException e) {
+                err.println(oneLine("raytracer: --output " + outputArg + " is not a file name (" + e.getReason() + ")"));
+                return 2;
+            }
+        }
         if (threads < 1) {
             err.println("raytracer: --threads must be at least 1");
             return 2;
