@@ -1,5 +1,7 @@
 package ray.bench;
 
+import com.google.gson.JsonObject;
+import com.google.gson.JsonParser;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
@@ -14,6 +16,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import ray.RayKind;
 import ray.Scene;
 import ray.parse.Parser;
 
@@ -169,7 +172,7 @@ public final class Bench {
         Path sceneDir = sceneDirectory();
         out.println("# gradle bench");
         out.println();
-        out.println("- command: `" + String.join(" ", self) + " -q --stats SCENE -o PNG`");
+        out.println("- command: `" + String.join(" ", self) + " -q --stats --json SCENE -o PNG`");
         out.println("- scenes: " + sceneDir.toAbsolutePath().normalize());
         out.println("- machine: " + Runtime.getRuntime().availableProcessors() + " cores, " + cpuName() + "; "
                 + System.getProperty("java.vm.name") + " " + System.getProperty("java.version"));
@@ -198,7 +201,7 @@ public final class Bench {
             for (String s : scenes) {
                 Path scene = sceneDir.resolve(s + ".txt");
                 List<String> cmd = new ArrayList<>(self);
-                cmd.addAll(List.of("-q", "--stats", scene.toAbsolutePath().toString(), "-o", work.resolve(s + ".png").toAbsolutePath().toString()));
+                cmd.addAll(List.of("-q", "--stats", "--json", scene.toAbsolutePath().toString(), "-o", work.resolve(s + ".png").toAbsolutePath().toString()));
                 Path log = work.resolve(s + ".log");
                 double t = time(cmd, work, log);
                 String text = Files.readString(log, StandardCharsets.UTF_8);
@@ -345,48 +348,54 @@ public final class Bench {
     // ---- the child's --stats line ----
 
     /** What one render reported with --stats. (Not a record: Gradle 4.4.1's class reader calls those malformed.) */
+    /**
+     * One render's numbers, read from the JSON object the launcher prints with {@code --stats --json}
+     * (keys in docs/json.md; rays by {@link RayKind#key()}).
+     */
     static final class Stats {
         final double parse, build, render, write, bvhBytes, cpu;
-        final long camera, shadow, mirror, peakMiB;
+        final long peakMiB;
+        final long[] rays = new long[RayKind.values().length];
 
-        Stats(double parse, double build, double render, double write, long camera, long shadow, long mirror,
-              long peakMiB, double bvhBytes, double cpu) {
-            this.parse = parse;
-            this.build = build;
-            this.render = render;
-            this.write = write;
-            this.camera = camera;
-            this.shadow = shadow;
-            this.mirror = mirror;
-            this.peakMiB = peakMiB;
-            this.bvhBytes = bvhBytes;
-            this.cpu = cpu;
-        }
-
-        private static final Pattern LINE = Pattern.compile(
-                "parse ([0-9.]+) s, build ([0-9.]+) s, render ([0-9.]+) s, write ([0-9.]+) s; ([0-9,]+) camera, ([0-9,]+) shadow, "
-                        + "([0-9,]+) mirror rays(?:; peak RSS ([0-9]+) MiB)?(?:; BVH ([0-9.]+) bytes/primitive)?(?:; cpu ([0-9.]+) s)?");
-
-        static Stats parse(String text) {
-            Matcher m = LINE.matcher(text);
-            if (!m.find()) {
-                return null;
+        private Stats(JsonObject o) {
+            JsonObject sec = o.getAsJsonObject("seconds");
+            parse = sec.get("parse").getAsDouble();
+            build = sec.get("build").getAsDouble();
+            render = sec.get("render").getAsDouble();
+            write = sec.get("write").getAsDouble();
+            cpu = o.get("cpuSeconds").getAsDouble();
+            peakMiB = o.get("peakRssBytes").getAsLong() >> 20;
+            bvhBytes = o.get("bvhBytesPerPrimitive").getAsDouble();
+            JsonObject r = o.getAsJsonObject("rays");
+            for (RayKind k : RayKind.values()) {
+                rays[k.ordinal()] = r.get(k.key()).getAsLong();
             }
-            return new Stats(d(m.group(1)), d(m.group(2)), d(m.group(3)), d(m.group(4)), l(m.group(5)), l(m.group(6)),
-                    l(m.group(7)), m.group(8) == null ? 0 : l(m.group(8)), m.group(9) == null ? 0 : d(m.group(9)),
-                    m.group(10) == null ? 0 : d(m.group(10)));
         }
 
-        private static double d(String s) {
-            return Double.parseDouble(s);
+        /** The stats object in a child's output (the line that is a JSON object), or null. */
+        static Stats parse(String text) {
+            for (String line : text.split("\n")) {
+                if (line.startsWith("{")) {
+                    try {
+                        return new Stats(JsonParser.parseString(line).getAsJsonObject());
+                    } catch (RuntimeException e) {   // malformed or a key missing: not the stats line
+                        return null;
+                    }
+                }
+            }
+            return null;
         }
 
-        private static long l(String s) {
-            return Long.parseLong(s.replace(",", ""));
+        long rays(RayKind k) {
+            return rays[k.ordinal()];
         }
 
         long rays() {
-            return camera + shadow + mirror;
+            long n = 0;
+            for (long r : rays) {
+                n += r;
+            }
+            return n;
         }
     }
 
@@ -405,10 +414,22 @@ public final class Bench {
         return median(v);
     }
 
+    /** "camera 1.23, shadow 0.40, mirror 0.00" (millions), every kind but those no run cast. */
+    private static String raysByKind(Stats a) {
+        StringBuilder b = new StringBuilder();
+        for (RayKind k : RayKind.values()) {
+            if (a.rays(k) != 0 || k.ordinal() <= RayKind.MIRROR.ordinal()) {
+                b.append(b.length() == 0 ? "" : ", ").append(k.key()).append(' ')
+                        .append(String.format(Locale.ROOT, "%.2f", a.rays(k) / 1e6));
+            }
+        }
+        return b.toString();
+    }
+
     private void printProcessTable(Map<String, Map<String, List<Double>>> times, Map<String, List<Stats>> stats) {
         out.println("## Whole process (median of " + runs + "; the split and memory as the process reports them)");
         out.println();
-        out.println("| scene | wall s | cpu s | parse s | build s | render s | write s | rays camera / shadow / mirror | render Mrays/s (all threads) | peak RSS MiB | BVH bytes/primitive |");
+        out.println("| scene | wall s | cpu s | parse s | build s | render s | write s | rays by kind (M) | render Mrays/s (all threads) | peak RSS MiB | BVH bytes/primitive |");
         out.println("|---|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|");
         for (String s : scenes) {
             List<Stats> l = stats.get(s);
@@ -418,10 +439,10 @@ public final class Bench {
             }
             Stats a = l.get(0);
             double render = medianOf(l, x -> x.render);
-            out.println(String.format(Locale.ROOT, "| %s | %.2f | %.2f | %.3f | %.3f | %.3f | %.3f | %.2f M / %.2f M / %.2f M | %.1f | %.0f | %.1f |",
+            out.println(String.format(Locale.ROOT, "| %s | %.2f | %.2f | %.3f | %.3f | %.3f | %.3f | %s | %.1f | %.0f | %.1f |",
                     s, median(times.get(s).get("raytracer")), medianOf(l, x -> x.cpu), medianOf(l, x -> x.parse),
-                    medianOf(l, x -> x.build), render, medianOf(l, x -> x.write), a.camera / 1e6, a.shadow / 1e6,
-                    a.mirror / 1e6, a.rays() / render / 1e6, medianOf(l, x -> x.peakMiB), a.bvhBytes));
+                    medianOf(l, x -> x.build), render, medianOf(l, x -> x.write), raysByKind(a),
+                    a.rays() / render / 1e6, medianOf(l, x -> x.peakMiB), a.bvhBytes));
         }
         out.println();
     }

@@ -231,7 +231,10 @@ public final class Main implements Callable<Integer> {
             return 2;
         }
         if (plan) {
-            return ray.plan.PlanCommand.run(scenes, json, cutFaint, out, err);
+            return ray.plan.PlanCommand.run(scenes, json, scene -> {
+                sampling.applyTo(scene);
+                scene.planCutFaint(cutFaint);
+            }, out, err);
         }
         if (study) {
             if (scenes.isEmpty() || output != null) {

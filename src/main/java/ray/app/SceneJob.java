@@ -191,7 +191,7 @@ final class SceneJob {
         }
         long t3 = System.nanoTime();
         // plain concatenation, not printf: java.util.Formatter's first use loads locale data (~20 ms)
-        if (!main.quiet) {
+        if (!main.quiet && !main.json) {   // with --json, stdout holds JSON Lines only
             summary.println(name + " -> " + target + " (" + scene.width + "x" + scene.height + ", " + scene.samplesPerPixel
                     + "x" + scene.samplesPerPixel + " AA, " + Main.fixed(t3 - t0, 2) + " s, "
                     + raysPerSecond(renderer.stats().total(), t2 - t1) + " rays/s: " + renderer.stats() + ")");

@@ -19,11 +19,14 @@ public final class PlanCommand {
     }
 
     public static int run(List<Path> scenes, boolean json, PrintStream out, PrintStream err) {
-        return run(scenes, json, false, out, err);
+        return run(scenes, json, s -> { }, out, err);
     }
 
-    /** {@link #run(List, boolean, PrintStream, PrintStream)}, planning the inexact cut of faint mirror paths when {@code cutFaint}. */
-    public static int run(List<Path> scenes, boolean json, boolean cutFaint, PrintStream out, PrintStream err) {
+    /**
+     * {@link #run(List, boolean, PrintStream, PrintStream)} with the command line's overrides applied to
+     * each scene before it is planned (samples, sampler, the inexact cut of faint paths).
+     */
+    public static int run(List<Path> scenes, boolean json, java.util.function.Consumer<Scene> overrides, PrintStream out, PrintStream err) {
         if (scenes.isEmpty()) {
             err.println("raytracer: --plan needs scene files");
             return 2;
@@ -34,7 +37,7 @@ public final class PlanCommand {
             List<String> warnings = new ArrayList<>();
             try {
                 Scene scene = Parser.parse(p, warnings);
-                scene.planCutFaint(cutFaint);
+                overrides.accept(scene);
                 for (String w : warnings) {
                     err.println(w);
                 }

@@ -1,181 +1,284 @@
 package ray.viewer;
 
 import java.awt.BorderLayout;
+import java.awt.Color;
 import java.awt.Dimension;
-import java.awt.Graphics;
-import java.awt.event.KeyEvent;
-import java.awt.image.BufferedImage;
+import java.awt.GraphicsConfiguration;
+import java.awt.Insets;
+import java.awt.Rectangle;
+import java.awt.Toolkit;
+import java.awt.Window;
+import java.awt.datatransfer.DataFlavor;
+import java.awt.event.WindowAdapter;
+import java.awt.event.WindowEvent;
 import java.io.File;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
-import javax.swing.JComponent;
-import javax.swing.JFileChooser;
+import javax.swing.BorderFactory;
 import javax.swing.JFrame;
 import javax.swing.JLabel;
-import javax.swing.JMenu;
-import javax.swing.JMenuBar;
-import javax.swing.JMenuItem;
-import javax.swing.JOptionPane;
-import javax.swing.KeyStroke;
+import javax.swing.JPanel;
+import javax.swing.JScrollPane;
+import javax.swing.JTextArea;
 import javax.swing.SwingUtilities;
-import javax.swing.filechooser.FileNameExtensionFilter;
-import ray.Scene;
-import ray.parse.Parser;
-import ray.parse.SceneFormatException;
+import javax.swing.Timer;
+import javax.swing.TransferHandler;
 import ray.render.Image;
-import ray.render.PngWriter;
-import ray.render.ProgressListener;
-import ray.render.RenderCancelledException;
-import ray.render.Renderer;
 
 /**
- * The viewer: open a scene file and watch it render tile by tile; save the result as a PNG.
- * {@code raytracer} with no arguments opens it.
+ * The viewer's window: open a scene (menu, Ctrl+O, drag and drop, recent files) and watch it render,
+ * stop, re-render, watch the file for changes, zoom and scroll, save the image shown as a PNG. The
+ * work is done by a {@link RenderSession} on background threads; this class only shows its events.
+ * {@code raytracer} with no arguments opens it; the process ends when the last window closes.
  */
 public final class ViewingFrame extends JFrame {
     private static final long serialVersionUID = 1L;
+    private static final String TITLE = "RayTracer viewer";
+    private static int openWindows;
 
-    private final ImagePanel panel = new ImagePanel();
-    private final JLabel status = new JLabel("Open a scene file (File > Open, Ctrl+O).");
-    private transient Renderer running;
-    private transient Image last;
-    private File lastDir = new File(".");
+    final ImageView view = new ImageView();
+    private final JLabel status = new JLabel("Open a scene file: File > Open (Ctrl+O), or drop one here.");
+    private final JTextArea error = new JTextArea();
+    private final transient RenderSession session;
+    private final transient RecentFiles recent = RecentFiles.user();
+    private final transient FileWatch watch = new FileWatch();
+    private final transient ViewerMenus menus;
+    private final Timer ticker;
+    private final JScrollPane scroll;
+    private File lastDir = new File(".").getAbsoluteFile();
 
-    public ViewingFrame() {
-        super("RayTracer viewer");
-        setDefaultCloseOperation(JFrame.EXIT_ON_CLOSE);
-        JMenuBar bar = new JMenuBar();
-        JMenu file = new JMenu("File");
-        file.add(item("Open scene...", KeyEvent.VK_O, this::chooseScene));
-        file.add(item("Save image as PNG...", KeyEvent.VK_S, this::saveImage));
-        file.add(item("Quit", KeyEvent.VK_Q, this::dispose));
-        bar.add(file);
-        setJMenuBar(bar);
-        add(panel, BorderLayout.CENTER);
-        add(status, BorderLayout.SOUTH);
-        panel.setPreferredSize(new Dimension(640, 480));
-        pack();
+    ViewingFrame() {
+        super(TITLE);
+        session = new RenderSession(SwingUtilities::invokeLater, new SessionEvents());
+        menus = new ViewerMenus(this);
+        setJMenuBar(menus.bar());
+        menus.bindExtraKeys(getRootPane());
+        menus.recentFiles(recent.list());
+        error.setEditable(false);
+        error.setLineWrap(true);
+        error.setWrapStyleWord(true);
+        error.setForeground(new Color(0xb00020));
+        error.setBorder(BorderFactory.createEmptyBorder(6, 8, 6, 8));
+        error.setVisible(false);
+        status.setBorder(BorderFactory.createEmptyBorder(3, 8, 3, 8));
+        status.setMinimumSize(new Dimension(0, status.getPreferredSize().height));
+        status.setPreferredSize(new Dimension(0, status.getPreferredSize().height));   // the text never sizes the window
+        JPanel south = new JPanel(new BorderLayout());
+        south.add(error, BorderLayout.NORTH);
+        south.add(status, BorderLayout.SOUTH);
+        scroll = new JScrollPane(view);
+        scroll.setBorder(BorderFactory.createEmptyBorder());
+        add(scroll, BorderLayout.CENTER);
+        add(south, BorderLayout.SOUTH);
+        setTransferHandler(new SceneDrop());
+        setDefaultCloseOperation(DISPOSE_ON_CLOSE);
+        addWindowListener(new Closing());
+        ticker = new Timer(200, e -> tick());
+        ticker.start();
+        setSize(720, 560);
+        setLocationByPlatform(true);
+        updateActions();
     }
 
     /** Opens a viewer window (on the Swing thread), rendering {@code scene} if it is not null. */
     public static void open(Path scene) {
         SwingUtilities.invokeLater(() -> {
+            LookAndFeels.install();
             ViewingFrame f = new ViewingFrame();
             f.setVisible(true);
             if (scene != null) {
-                f.lastDir = scene.toAbsolutePath().getParent().toFile();
                 f.load(scene);
             }
         });
     }
 
-    private JMenuItem item(String text, int key, Runnable action) {
-        JMenuItem i = new JMenuItem(text);
-        i.setAccelerator(KeyStroke.getKeyStroke(key, java.awt.Toolkit.getDefaultToolkit().getMenuShortcutKeyMaskEx()));
-        i.addActionListener(e -> action.run());
-        return i;
-    }
-
-    private void chooseScene() {
-        JFileChooser fc = new JFileChooser(lastDir);
-        fc.setFileFilter(new FileNameExtensionFilter("Scene files (*.txt)", "txt"));
-        if (fc.showOpenDialog(this) == JFileChooser.APPROVE_OPTION) {
-            lastDir = fc.getSelectedFile().getParentFile();
-            load(fc.getSelectedFile().toPath());
-        }
-    }
-
-    /** Parses {@code file} and starts rendering it in the background; errors go to a dialog. */
-    public void load(Path file) {
-        List<String> warnings = new ArrayList<>();
-        Scene scene;
-        try {
-            scene = Parser.parse(file, warnings);
-        } catch (SceneFormatException e) {
-            status.setText(e.getMessage());
-            JOptionPane.showMessageDialog(this, e.getMessage(), "Cannot read scene", JOptionPane.ERROR_MESSAGE);
-            return;
-        }
-        if (running != null) {
-            running.cancel();
-        }
-        setTitle("RayTracer viewer - " + file.getFileName());
-        panel.reset(scene.width, scene.height);
-        pack();
-        Renderer r = new Renderer(scene).listener(new ProgressListener() {
-            @Override
-            public void tileDone(Image image, int x0, int y0, int x1, int y1, int done, int total) {
-                panel.copyTile(image, x0, y0, x1, y1);
-                SwingUtilities.invokeLater(() -> status.setText(String.format("%s: %d%%", file.getFileName(), 100 * done / total)));
-            }
-        });
-        running = r;
-        long start = System.nanoTime();
-        Thread t = new Thread(() -> {
-            try {
-                Image img = r.render();
-                double s = (System.nanoTime() - start) / 1e9;
-                SwingUtilities.invokeLater(() -> {
-                    last = img;
-                    status.setText(String.format("%s: done in %.2f s, %s%s", file.getFileName(), s, r.stats(),
-                            warnings.isEmpty() ? "" : "; " + String.join("; ", warnings)));
-                });
-            } catch (RenderCancelledException e) {
-                // a newer scene replaced this one
-            } catch (RuntimeException | OutOfMemoryError e) {
-                SwingUtilities.invokeLater(() -> status.setText(file.getFileName() + ": render failed: " + e));
-            }
-        }, "viewer-render");
-        t.setDaemon(true);
-        t.start();
-    }
-
-    private void saveImage() {
-        if (last == null) {
-            JOptionPane.showMessageDialog(this, "Nothing rendered yet.");
-            return;
-        }
-        JFileChooser fc = new JFileChooser(lastDir);
-        if (fc.showSaveDialog(this) == JFileChooser.APPROVE_OPTION) {
-            try {
-                PngWriter.write(last, fc.getSelectedFile().toPath());
-            } catch (java.io.IOException e) {
-                JOptionPane.showMessageDialog(this, e.getMessage(), "Cannot save", JOptionPane.ERROR_MESSAGE);
+    /** Closes every viewer window; the process then ends. */
+    static void quitAll() {
+        for (Window w : Window.getWindows()) {
+            if (w instanceof ViewingFrame && w.isDisplayable()) {
+                w.dispose();
             }
         }
     }
 
-    /** Shows the image as it is being rendered; tiles are copied in from the render threads. */
-    static final class ImagePanel extends JComponent {
-        private static final long serialVersionUID = 1L;
-        private transient BufferedImage shown = new BufferedImage(1, 1, BufferedImage.TYPE_INT_RGB);
-
-        void reset(int w, int h) {
-            shown = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
-            setPreferredSize(new Dimension(w, h));
-            revalidate();
-            repaint();
+    /** Reads and renders {@code file} (in the background); the image shown stays until the new one starts. */
+    void load(Path file) {
+        lastDir = file.toAbsolutePath().getParent().toFile();
+        if (menus.watch.isSelected()) {
+            watch.watch(file);
         }
+        session.open(file);
+        recent.add(file);
+        menus.recentFiles(recent.list());
+    }
 
-        void copyTile(Image image, int x0, int y0, int x1, int y1) {
-            BufferedImage b = shown;
-            if (b.getWidth() != image.width || b.getHeight() != image.height) {
-                return;
-            }
-            for (int y = y0; y < y1; y++) {
-                for (int x = x0; x < x1; x++) {
-                    int i = 3 * (y * image.width + x);
-                    b.setRGB(x, y, Image.toByte(image.rgb[i]) << 16 | Image.toByte(image.rgb[i + 1]) << 8
-                            | Image.toByte(image.rgb[i + 2]));
-                }
-            }
-            repaint(x0, y0, x1 - x0, y1 - y0);
+    void chooseScene() {
+        Path p = Dialogs.chooseScene(this, lastDir);
+        if (p != null) {
+            load(p);
+        }
+    }
+
+    void rerender() {
+        RenderJob job = session.current();
+        if (job != null) {
+            load(job.file());
+        }
+    }
+
+    void stop() {
+        session.stop();
+    }
+
+    void watchChanged() {
+        RenderJob job = session.current();
+        watch.watch(menus.watch.isSelected() && job != null ? job.file() : null);
+    }
+
+    void saveImage() {
+        RenderJob shown = session.shown();
+        if (shown == null) {
+            return;                    // the action is disabled then; a shortcut may still arrive
+        }
+        RenderJob current = session.current();
+        String saved = Dialogs.save(this, shown, current == null ? null : current.file());
+        if (saved != null) {
+            setStatus(saved);
+        }
+    }
+
+    private void setStatus(String text) {
+        status.setText(text);
+        status.setToolTipText(text);      // the whole line when the window is narrower than the text
+    }
+
+    void showError(String text) {
+        error.setText(text);
+        error.setVisible(text != null);
+        revalidate();
+    }
+
+    /** Five times a second: the status of a running render, and the watched file. */
+    private void tick() {
+        RenderJob job = session.current();
+        if (job != null && job.state() == RenderJob.State.RENDERING) {
+            setStatus(StatusText.of(job, System.nanoTime()));
+        }
+        if (menus.watch.isSelected() && watch.changed()) {
+            load(watch.file());
+        }
+    }
+
+    private void updateActions() {
+        menus.save.setEnabled(session.canSave());
+        menus.stop.setEnabled(session.busy());
+        menus.rerender.setEnabled(session.current() != null);
+        boolean image = view.hasImage();
+        menus.fit.setEnabled(image);
+        menus.actual.setEnabled(image);
+        menus.zoomIn.setEnabled(image);
+        menus.zoomOut.setEnabled(image);
+    }
+
+    /** The window's first size: the image at 1:1 plus the frame, at most 90% of the screen's usable area. */
+    private void sizeFor(int w, int h) {
+        GraphicsConfiguration gc = getGraphicsConfiguration();
+        Rectangle screen = gc.getBounds();
+        Insets in = Toolkit.getDefaultToolkit().getScreenInsets(gc);
+        int maxW = (screen.width - in.left - in.right) * 9 / 10, maxH = (screen.height - in.top - in.bottom) * 9 / 10;
+        Dimension viewport = scroll.getViewport().getExtentSize();
+        int chromeW = getWidth() - viewport.width, chromeH = getHeight() - viewport.height;
+        setSize(Math.max(720, Math.min(maxW, w + chromeW)), Math.max(400, Math.min(maxH, h + chromeH)));
+    }
+
+    /** The session's events, on the event thread. */
+    private final class SessionEvents implements RenderSession.View {
+        private boolean sized;
+
+        @Override
+        public void parsing(RenderJob job) {
+            setStatus(StatusText.of(job, System.nanoTime()));
+            updateActions();
         }
 
         @Override
-        protected void paintComponent(Graphics g) {
-            g.drawImage(shown, 0, 0, null);
+        public void rendering(RenderJob job) {
+            showError(null);
+            setTitle(TITLE + " - " + job.file().getFileName());
+            view.reset(job.scene().width, job.scene().height);
+            if (!sized) {
+                sized = true;
+                sizeFor(job.scene().width, job.scene().height);
+            }
+            setStatus(StatusText.of(job, System.nanoTime()));
+            updateActions();
+        }
+
+        @Override
+        public void tile(RenderJob job, Image image, int x0, int y0, int x1, int y1) {
+            view.copyTile(image, x0, y0, x1, y1);
+        }
+
+        @Override
+        public void ended(RenderJob job) {
+            if (job.state() == RenderJob.State.FAILED) {
+                showError(job.error());
+                RenderJob back = session.shown();
+                if (back != null) {
+                    view.show(back.image());        // the last finished image comes back
+                    setTitle(TITLE + " - " + back.file().getFileName());
+                }
+            } else if (job.state() == RenderJob.State.DONE) {
+                view.repaint();
+                for (String w : job.warnings()) {
+                    System.err.println(w);
+                }
+                showError(job.warnings().isEmpty() ? null : String.join("\n", job.warnings()));
+            }
+            setStatus(StatusText.of(job, System.nanoTime()));
+            updateActions();
+        }
+    }
+
+    /** Dropping a file onto the window opens it. */
+    private final class SceneDrop extends TransferHandler {
+        private static final long serialVersionUID = 1L;
+
+        @Override
+        public boolean canImport(TransferSupport s) {
+            return s.isDataFlavorSupported(DataFlavor.javaFileListFlavor);
+        }
+
+        @Override
+        public boolean importData(TransferSupport s) {
+            try {
+                List<?> files = (List<?>) s.getTransferable().getTransferData(DataFlavor.javaFileListFlavor);
+                if (files.isEmpty() || !(files.get(0) instanceof File f)) {
+                    return false;
+                }
+                load(f.toPath());
+                return true;
+            } catch (java.awt.datatransfer.UnsupportedFlavorException | java.io.IOException e) {
+                showError("Cannot open the dropped file: " + Failures.reason(e));
+                return false;
+            }
+        }
+    }
+
+    /** Closing the window stops its work at once; the last window's closing ends the process. */
+    private final class Closing extends WindowAdapter {
+        @Override
+        public void windowOpened(WindowEvent e) {
+            openWindows++;
+        }
+
+        @Override
+        public void windowClosed(WindowEvent e) {
+            session.stop();
+            ticker.stop();
+            if (--openWindows <= 0) {
+                System.exit(0);       // render threads are daemons, but a user class may have started others
+            }
         }
     }
 }

@@ -69,7 +69,7 @@ class PlanCommandTest {
         }
         assertEquals(0, run(Stream.concat(Stream.of("--plan", "--json"), scenes.stream()).toArray(String[]::new)), err());
         String[] plans = out().split("\n");
-        assertEquals(0, run(Stream.concat(Stream.of("-q", "--stats", "--json"), scenes.stream()).toArray(String[]::new)), err());
+        assertEquals(0, run(Stream.concat(Stream.of("--stats", "--json"), scenes.stream()).toArray(String[]::new)), err());
         String[] stats = out().split("\n");
         assertEquals(scenes.size(), plans.length);
         assertEquals(scenes.size(), stats.length);
@@ -126,6 +126,9 @@ class PlanCommandTest {
         assertTrue(o.contains("  saved: no shadow rays at the 1 pure mirror (noBase): a Glazed material without a base has no direct term"), o);
         assertTrue(o.contains("  refraction          off  no material refracts"), o);
         assertFalse(Files.exists(dir.resolve("s.png")), "--plan renders nothing");
+        // the command line's overrides are planned too
+        assertEquals(0, run("--plan", "--samples", "3", "--sampler", "jittered", scene.toString()));
+        assertTrue(out().contains("240 x 180 pixels x 3x3 samples (jittered sampler)   <= 388,800 camera rays"), out());
     }
 
     @Test

@@ -1,0 +1,73 @@
+package ray.viewer;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.prefs.BackingStoreException;
+import java.util.prefs.Preferences;
+
+/**
+ * The scenes opened last, newest first, at most {@value #MAX}, kept in the user's preferences
+ * ({@link Preferences}, so they survive a restart) as absolute paths. A preferences store that cannot
+ * be written only means the list is not remembered.
+ */
+final class RecentFiles {
+
+    static final int MAX = 8;
+    private final Preferences node;
+
+    RecentFiles(Preferences node) {
+        this.node = node;
+    }
+
+    /** The viewer's own node in the user's preferences. */
+    static RecentFiles user() {
+        return new RecentFiles(Preferences.userRoot().node("raytracer/viewer/recent"));
+    }
+
+    List<Path> list() {
+        List<Path> out = new ArrayList<>();
+        for (int i = 0; i < MAX; i++) {
+            String p = node.get(Integer.toString(i), null);
+            if (p == null) {
+                break;
+            }
+            try {
+                out.add(Path.of(p));
+            } catch (java.nio.file.InvalidPathException e) {
+                // written by another platform: skip it
+            }
+        }
+        return out;
+    }
+
+    /** Puts {@code file} first (once), dropping the oldest beyond {@value #MAX}. */
+    void add(Path file) {
+        Path abs = file.toAbsolutePath().normalize();
+        List<Path> l = list();
+        l.remove(abs);
+        l.add(0, abs);
+        store(l);
+    }
+
+    void remove(Path file) {
+        List<Path> l = list();
+        l.remove(file.toAbsolutePath().normalize());
+        store(l);
+    }
+
+    private void store(List<Path> l) {
+        for (int i = 0; i < MAX; i++) {
+            if (i < l.size()) {
+                node.put(Integer.toString(i), l.get(i).toString());
+            } else {
+                node.remove(Integer.toString(i));
+            }
+        }
+        try {
+            node.flush();
+        } catch (BackingStoreException | SecurityException e) {
+            // not remembered across restarts; the list still works in this run
+        }
+    }
+}

@@ -1,0 +1,108 @@
+package ray.viewer;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import ray.RayStats;
+import ray.Scene;
+import ray.render.Image;
+import ray.render.Renderer;
+import ray.render.WorkProgress;
+
+/**
+ * One attempt at showing a scene: read the file, then render it. Created and read on the session's
+ * thread (the Swing event thread in the viewer); the parse and the render run on a background thread,
+ * which fills in the fields below before handing the job back through the session.
+ */
+public final class RenderJob {
+
+    /** Where a job is. Only the last three are final. */
+    public enum State { PARSING, RENDERING, DONE, STOPPED, FAILED }
+
+    final Path file;
+    final long startNanos = System.nanoTime();
+    final List<String> warnings = new ArrayList<>();
+    volatile boolean cancelled;
+    volatile Renderer renderer;
+    volatile Scene scene;
+    volatile WorkProgress progress;
+    private State state = State.PARSING;
+    long parseNanos;
+    long renderNanos;
+    Image image;
+    RayStats stats;
+    String error;
+    String planSummary;
+
+    RenderJob(Path file) {
+        this.file = file;
+    }
+
+    public Path file() {
+        return file;
+    }
+
+    public State state() {
+        return state;
+    }
+
+    void state(State s) {
+        state = s;
+    }
+
+    public boolean finished() {
+        return state == State.DONE || state == State.STOPPED || state == State.FAILED;
+    }
+
+    /** The scene as read (null while parsing or when it could not be read). */
+    public Scene scene() {
+        return scene;
+    }
+
+    /** Render progress by work (null before the render starts). */
+    public WorkProgress progress() {
+        return progress;
+    }
+
+    /** The finished image (null unless {@link State#DONE}). */
+    public Image image() {
+        return image;
+    }
+
+    /** The whole error, e.g. {@code scene.txt:12: Sphere has no field 'radus' (...)} (null unless failed). */
+    public String error() {
+        return error;
+    }
+
+    /** Rays cast by the finished render, by kind (null unless {@link State#DONE}). */
+    public RayStats stats() {
+        return stats;
+    }
+
+    public long parseNanos() {
+        return parseNanos;
+    }
+
+    public long renderNanos() {
+        return renderNanos;
+    }
+
+    /** Parser warnings, e.g. zero-area triangles, as {@code file:line: warning: ...}. */
+    public List<String> warnings() {
+        return warnings;
+    }
+
+    /** The render plan's one-line summary, or null where there is none. */
+    public String planSummary() {
+        return planSummary;
+    }
+
+    /** Asks the job to stop: the renderer stops handing out work; a parse in progress is discarded. */
+    void cancel() {
+        cancelled = true;
+        Renderer r = renderer;
+        if (r != null) {
+            r.cancel();
+        }
+    }
+}

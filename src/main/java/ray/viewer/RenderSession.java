@@ -1,0 +1,192 @@
+package ray.viewer;
+
+import java.nio.file.Path;
+import java.util.concurrent.Executor;
+import ray.Scene;
+import ray.parse.Parser;
+import ray.parse.SceneFormatException;
+import ray.render.Image;
+import ray.render.ProgressListener;
+import ray.render.RenderCancelledException;
+import ray.render.Renderer;
+import ray.render.WorkProgress;
+
+/**
+ * The viewer's model, without Swing: one scene at a time is read and rendered on a background thread
+ * (parsing included, so the window never freezes), a newer request or {@link #stop()} cancels the
+ * running one at once, and the session remembers which finished image is on screen, which is the only
+ * thing that can be saved.
+ *
+ * <p>All methods are called, and every {@link View} callback arrives, on the session's thread: the
+ * {@code executor} given to the constructor ({@code SwingUtilities::invokeLater} in the viewer, a
+ * queue in tests). Background threads only post to it. Events of a job that is no longer the current
+ * one are dropped, so a late tile of a cancelled render never reaches the screen.
+ */
+public final class RenderSession {
+
+    /** What the window does with the session's events (all on the session's thread). */
+    public interface View {
+        /** {@code job} has started reading its file. */
+        default void parsing(RenderJob job) {
+        }
+
+        /** The scene is read; its image (of the scene's size, black so far) replaces the one shown. */
+        default void rendering(RenderJob job) {
+        }
+
+        /** Pixels [x0, x1) x [y0, y1) of {@code image} are final. */
+        default void tile(RenderJob job, Image image, int x0, int y0, int x1, int y1) {
+        }
+
+        /**
+         * {@code job} ended: done, stopped or failed. After a failed render {@link #shown()} is again the
+         * last finished image (or null), which the window puts back.
+         */
+        default void ended(RenderJob job) {
+        }
+    }
+
+    private final Executor executor;
+    private final View view;
+    private final int threads;
+    private RenderJob current;
+    private RenderJob shown;
+    private RenderJob lastDone;
+
+    public RenderSession(Executor executor, View view) {
+        this(executor, view, Runtime.getRuntime().availableProcessors());
+    }
+
+    public RenderSession(Executor executor, View view, int threads) {
+        this.executor = executor;
+        this.view = view;
+        this.threads = threads;
+    }
+
+    /** The job being read or rendered, or the last one if none is (null before the first). */
+    public RenderJob current() {
+        return current;
+    }
+
+    /** The finished job whose whole image is on screen, or null (nothing yet, a render in progress or stopped). */
+    public RenderJob shown() {
+        return shown;
+    }
+
+    /** True when a finished image is on screen: the only state in which saving makes sense. */
+    public boolean canSave() {
+        return shown != null;
+    }
+
+    public boolean busy() {
+        return current != null && !current.finished();
+    }
+
+    /** Cancels whatever runs and starts reading and rendering {@code file} anew (reload and re-render too). */
+    public RenderJob open(Path file) {
+        stop();
+        RenderJob job = new RenderJob(file);
+        current = job;
+        view.parsing(job);
+        Thread t = new Thread(() -> run(job), "viewer-job");
+        t.setDaemon(true);
+        t.start();
+        return job;
+    }
+
+    /** Stops the running job at once (its late events are dropped); the partial image stays on screen. */
+    public void stop() {
+        RenderJob job = current;
+        if (job == null || job.finished()) {
+            return;
+        }
+        job.cancel();
+        if (job.state() == RenderJob.State.RENDERING) {
+            shown = null;                 // the partial image of the stopped render is on screen
+        }
+        job.state(RenderJob.State.STOPPED);
+        view.ended(job);
+    }
+
+    // ---- the background thread: everything below posts back to the session's thread ----
+
+    private void run(RenderJob job) {
+        Scene scene;
+        long t0 = System.nanoTime();
+        try {
+            scene = Parser.parse(job.file, job.warnings);
+        } catch (SceneFormatException e) {
+            fail(job, e.getMessage(), false);
+            return;
+        } catch (RuntimeException | StackOverflowError e) {     // a user class's init() or a parser bug
+            fail(job, Failures.describe(job.file + ": reading the scene failed", e), false);
+            return;
+        } catch (OutOfMemoryError e) {
+            fail(job, job.file + ": the scene is too large for this JVM's heap (raise it, e.g. JAVA_OPTS=-Xmx16g)", false);
+            return;
+        }
+        job.parseNanos = System.nanoTime() - t0;
+        if (job.cancelled) {
+            return;
+        }
+        job.planSummary = PlanSummary.of(scene);
+        Renderer renderer = new Renderer(scene).threads(threads);
+        ProgressListener tiles = new ProgressListener() {
+            @Override
+            public void tileDone(Image image, int x0, int y0, int x1, int y1, int done, int total) {
+                post(job, () -> view.tile(job, image, x0, y0, x1, y1));
+            }
+        };
+        job.progress = new WorkProgress(scene.width, scene.height, tiles);
+        renderer.listener(job.progress);
+        job.scene = scene;
+        job.renderer = renderer;
+        if (job.cancelled) {              // stop() came between the check above and the renderer being set
+            return;
+        }
+        post(job, () -> {
+            job.state(RenderJob.State.RENDERING);
+            shown = null;
+            view.rendering(job);
+        });
+        long t1 = System.nanoTime();
+        try {
+            Image image = renderer.render();
+            job.renderNanos = System.nanoTime() - t1;
+            post(job, () -> {
+                job.image = image;
+                job.stats = renderer.stats();
+                job.state(RenderJob.State.DONE);
+                shown = job;
+                lastDone = job;
+                view.ended(job);
+            });
+        } catch (RenderCancelledException e) {
+            // stop() or a newer job: already reported
+        } catch (OutOfMemoryError e) {
+            fail(job, job.file + ": out of memory while rendering (raise the heap, e.g. JAVA_OPTS=-Xmx16g)", true);
+        } catch (RuntimeException | StackOverflowError e) {
+            fail(job, Failures.describe(job.file + ": rendering failed", e), true);
+        }
+    }
+
+    private void fail(RenderJob job, String message, boolean rendering) {
+        post(job, () -> {
+            job.error = Failures.oneLine(message);
+            job.state(RenderJob.State.FAILED);
+            if (rendering) {
+                shown = lastDone;         // the window puts the last finished image back
+            }
+            view.ended(job);
+        });
+    }
+
+    /** Runs {@code r} on the session's thread if {@code job} is still current and running by then. */
+    private void post(RenderJob job, Runnable r) {
+        executor.execute(() -> {
+            if (job == current && !job.finished()) {
+                r.run();
+            }
+        });
+    }
+}

@@ -1,0 +1,223 @@
+package ray.viewer;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import ray.parse.Parser;
+import ray.render.Image;
+import ray.render.Renderer;
+
+/**
+ * The viewer's model without a window: the session's thread is a queue the test drains, so every
+ * event is seen in order. Images must equal the command line's renderer; errors must be whole and
+ * keep the last finished image; stop must end the work and drop late events.
+ */
+class RenderSessionTest {
+
+    static final String GOOD = """
+            Width 40
+            Height 30
+            AASamples 2
+            BGColor [0.1 0.2 0.3]
+            AmbientLight [0.2 0.2 0.2]
+
+            Camera Camera
+            Vector3d eye [0 0 5]
+            Vector3d target [0 0 0]
+            double yFOV 40
+
+            Material Diffuse red
+            Vector3d diffuseColor [0.8 0.1 0.1]
+
+            Surface Sphere
+            Vector3d center [0 0 0]
+            double radius 1
+            ref material red
+
+            Light PointLight
+            Vector3d position [3 3 3]
+            Vector3d intensity [20 20 20]
+            """;
+
+    /** Large and heavily supersampled: takes long enough to be stopped in the middle. */
+    static final String SLOW = GOOD.replace("Width 40", "Width 1600").replace("Height 30", "Height 1200")
+            .replace("AASamples 2", "AASamples 12");
+
+    private final BlockingQueue<Runnable> thread = new LinkedBlockingQueue<>();
+    private final Recorder events = new Recorder();
+    private final RenderSession session = new RenderSession(thread::add, events, 2);
+
+    /** Records the events and checks each tile belongs to the job being rendered. */
+    static final class Recorder implements RenderSession.View {
+        final List<String> log = new ArrayList<>();
+        long pixels;
+        RenderJob rendering;
+
+        @Override
+        public void parsing(RenderJob job) {
+            log.add("parsing " + job.file().getFileName());
+        }
+
+        @Override
+        public void rendering(RenderJob job) {
+            rendering = job;
+            pixels = 0;
+            log.add("rendering " + job.file().getFileName());
+        }
+
+        @Override
+        public void tile(RenderJob job, Image image, int x0, int y0, int x1, int y1) {
+            assertSame(rendering, job, "a tile of a job that is not the one rendering");
+            pixels += (long) (x1 - x0) * (y1 - y0);
+        }
+
+        @Override
+        public void ended(RenderJob job) {
+            log.add("ended " + job.file().getFileName() + " " + job.state());
+        }
+    }
+
+    /** Runs the session's events until {@code job} has finished (or 60 s pass, a failure). */
+    private void runUntilFinished(RenderJob job) throws InterruptedException {
+        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
+        while (!job.finished()) {
+            Runnable r = thread.poll(end - System.nanoTime(), TimeUnit.NANOSECONDS);
+            assertNotNull(r, "no event within 60 s; log: " + events.log);
+            r.run();
+        }
+    }
+
+    private void runUntilRendering(RenderJob job) throws InterruptedException {
+        while (job.state() == RenderJob.State.PARSING) {
+            Runnable r = thread.poll(60, TimeUnit.SECONDS);
+            assertNotNull(r, "no event within 60 s; log: " + events.log);
+            r.run();
+        }
+    }
+
+    static Path write(Path dir, String name, String text) throws IOException {
+        return Files.writeString(dir.resolve(name), text);
+    }
+
+    @Test
+    void finishedImageIsTheCommandLinesImage(@TempDir Path dir) throws Exception {
+        Path scene = write(dir, "good.txt", GOOD);
+        RenderJob job = session.open(scene);
+        runUntilFinished(job);
+        assertEquals(RenderJob.State.DONE, job.state(), events.log::toString);
+        Image expected = new Renderer(Parser.parse(scene)).render();
+        assertArrayEquals(expected.rgb, job.image().rgb);
+        assertEquals(40 * 30, events.pixels, "every pixel arrives in exactly one tile");
+        assertEquals(1.0, job.progress().fraction());
+        assertSame(job, session.shown());
+        assertTrue(session.canSave());
+        assertEquals(List.of("parsing good.txt", "rendering good.txt", "ended good.txt DONE"), events.log);
+        assertTrue(job.stats().get(ray.RayKind.CAMERA) == 40 * 30 * 4, "camera rays: " + job.stats());
+    }
+
+    @Test
+    void badSceneShowsFileAndLineAndKeepsTheLastImage(@TempDir Path dir) throws Exception {
+        Path scene = write(dir, "s.txt", GOOD);
+        RenderJob good = session.open(scene);
+        runUntilFinished(good);
+        write(dir, "s.txt", GOOD.replace("double radius 1", "double radus 1"));
+        RenderJob bad = session.open(scene);
+        runUntilFinished(bad);
+        assertEquals(RenderJob.State.FAILED, bad.state());
+        assertTrue(bad.error().startsWith(scene + ":17: "), bad.error());
+        assertTrue(bad.error().contains("radus"), bad.error());
+        assertSame(good, session.shown(), "the last finished image stays and can be saved");
+        assertFalse(events.log.contains("rendering s.txt") && events.log.lastIndexOf("rendering s.txt") > 2,
+                "a scene that cannot be read never replaces the image: " + events.log);
+        // fixing the file and rendering again works
+        write(dir, "s.txt", GOOD);
+        RenderJob fixed = session.open(scene);
+        runUntilFinished(fixed);
+        assertEquals(RenderJob.State.DONE, fixed.state());
+        assertSame(fixed, session.shown());
+    }
+
+    @Test
+    void userClassFailureNamesTheMethodOnOneLine(@TempDir Path dir) throws Exception {
+        Path good = write(dir, "good.txt", GOOD);
+        RenderJob first = session.open(good);
+        runUntilFinished(first);
+        Path scene = write(dir, "throws.txt", GOOD.replace("Material Diffuse red", "Material ThrowingMaterial red")
+                .replace("Vector3d diffuseColor [0.8 0.1 0.1]\n", ""));
+        RenderJob job = session.open(scene);
+        runUntilFinished(job);
+        assertEquals(RenderJob.State.FAILED, job.state());
+        String e = job.error();
+        assertTrue(e.startsWith(scene + ": rendering failed in ThrowingMaterial.shade (ThrowingMaterial.java:"), e);
+        assertTrue(e.endsWith("UnsupportedOperationException: student code not finished"), e);
+        assertSame(first, session.shown(), "the last finished image comes back after a failed render");
+        assertTrue(events.log.contains("rendering throws.txt"), events.log::toString);
+    }
+
+    @Test
+    void missingFileIsReportedAndNothingCanBeSaved(@TempDir Path dir) throws Exception {
+        RenderJob job = session.open(dir.resolve("nope.txt"));
+        runUntilFinished(job);
+        assertEquals(RenderJob.State.FAILED, job.state());
+        assertEquals(dir.resolve("nope.txt") + ": cannot read the scene: no such file", job.error());
+        assertNull(session.shown());
+        assertFalse(session.canSave());
+    }
+
+    @Test
+    void stopEndsTheRenderAndDropsItsLateEvents(@TempDir Path dir) throws Exception {
+        Path scene = write(dir, "slow.txt", SLOW);
+        RenderJob job = session.open(scene);
+        runUntilRendering(job);
+        assertTrue(session.busy());
+        session.stop();
+        assertEquals(RenderJob.State.STOPPED, job.state());
+        assertFalse(session.busy());
+        assertFalse(session.canSave(), "a stopped render's partial image is not saveable");
+        awaitNoRenderThreads();
+        long pixelsAtStop = events.pixels;
+        for (Runnable r; (r = thread.poll()) != null; ) {
+            r.run();
+        }
+        assertEquals(pixelsAtStop, events.pixels, "tiles after stop are dropped");
+        assertTrue(job.progress().fraction() < 1, "the slow scene was stopped before its end");
+        assertEquals("ended slow.txt STOPPED", events.log.get(events.log.size() - 1));
+    }
+
+    @Test
+    void openingAnotherSceneStopsTheRunningOne(@TempDir Path dir) throws Exception {
+        RenderJob slow = session.open(write(dir, "slow.txt", SLOW));
+        runUntilRendering(slow);
+        RenderJob good = session.open(write(dir, "good.txt", GOOD));
+        assertEquals(RenderJob.State.STOPPED, slow.state());
+        runUntilFinished(good);
+        assertEquals(RenderJob.State.DONE, good.state());
+        assertEquals(40 * 30, events.pixels, "no tile of the stopped scene reached the new image");
+        assertSame(good, session.shown());
+    }
+
+    /** The stopped renderer's threads end (each finishes at most its current tile). */
+    static void awaitNoRenderThreads() throws InterruptedException {
+        for (Thread t : Thread.getAllStackTraces().keySet()) {
+            if (t.getName().startsWith("render-")) {
+                t.join(30_000);
+                assertFalse(t.isAlive(), t.getName() + " still runs 30 s after stop");
+            }
+        }
+    }
+}
