@@ -58,7 +58,7 @@ public final class PngWriter {
 
     /**
      * Checks that a PNG can be written to {@code target} and reserves its temporary file. Throws an
-     * {@link IOException} whose message is the reason in a few words ("no such folder /x",
+     * {@link IOException} whose message is the reason in a few words ("no such folder",
      * "permission denied", "read-only file system", "name too long (300 bytes, at most 255)", "not a
      * regular file (a block device)") without the target's name.
      */
@@ -89,7 +89,7 @@ public final class PngWriter {
         Path dir = real.getParent();
         BasicFileAttributes d = attributes(dir);
         if (d == null) {
-            throw new IOException("no such folder " + dir);
+            throw new IOException("no such folder");
         }
         if (!d.isDirectory()) {
             throw new IOException(dir + " is not a folder");

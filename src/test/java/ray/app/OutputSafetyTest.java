@@ -109,7 +109,7 @@ class OutputSafetyTest {
         assertEquals(List.of("a.png", "b.png"), MainBadInputTest.names(out));
         Run missing = run("-q", "-o", dir.resolve("nope") + "/", a.toString());
         assertEquals(1, missing.status());
-        assertEquals(List.of(dir.resolve("nope/a.png") + ": cannot write the image: no such folder " + dir.resolve("nope")), missing.errLines());
+        assertEquals(List.of(dir.resolve("nope/a.png") + ": cannot write the image: no such folder"), missing.errLines());
         assertFalse(Files.exists(dir.resolve("nope")), "a trailing / never turns into a file named like the folder");
     }
 
@@ -166,7 +166,7 @@ class OutputSafetyTest {
         Path png = dir.resolve("no-such-folder/a.png");
         Run r = run("-q", "-o", png.toString(), scene.toString());
         assertEquals(1, r.status());
-        assertEquals(List.of(png + ": cannot write the image: no such folder " + png.getParent()), r.errLines());
+        assertEquals(List.of(png + ": cannot write the image: no such folder"), r.errLines());
     }
 
     /** A folder the process may not write into: the reason is "permission denied". */
