@@ -45,7 +45,7 @@ public final class PlanReport {
         boolean adaptive = "adaptive".equals(s.sampler);
         effects.add(new Effect("camera rays", true, s.width + " x " + s.height + " pixels x " + (adaptive ? "at most " : "") + ns + "x" + ns
                 + " samples (" + s.sampler + " sampler)", RayKind.CAMERA));
-        List<Material> ambient = select(used, true, "ambient"), direct = select(used, true, "direct"),
+        List<Material> ambient = zero(s.ambientLight) ? List.of() : select(used, true, "ambient"), direct = select(used, true, "direct"),
                 highlight = select(used, true, "highlight"), mirror = select(used, true, "mirror"),
                 refraction = select(used, true, "refraction"), unknown = select(used, true, "unknown");
         effects.add(new Effect("ambient", !ambient.isEmpty(), !ambient.isEmpty() ? "k_a I_a at " + names(ambient)
@@ -139,7 +139,7 @@ public final class PlanReport {
         for (Map.Entry<Material, Shading> e : used.entrySet()) {
             Shading s = e.getValue();
             boolean has = switch (what) {
-                case "ambient" -> s.terms.contains(Term.AMBIENT) && !s.unknown;
+                case "ambient" -> s.terms.contains(Term.AMBIENT);
                 case "direct" -> s.direct;
                 case "highlight" -> s.terms.contains(Term.HIGHLIGHT);
                 case "mirror" -> s.mirror > 0;

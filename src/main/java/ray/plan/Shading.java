@@ -3,7 +3,6 @@ package ray.plan;
 import java.util.EnumSet;
 import java.util.List;
 import java.util.Set;
-import ray.Scene;
 import ray.material.Diffuse;
 import ray.material.GlazedMaterial;
 import ray.material.Material;
@@ -78,10 +77,5 @@ final class Shading {
                 direct, terms.contains(Term.OWN_RAYS), false, 1);
         other.weight = other.mirror + other.refraction > 0 || other.unknown ? Double.POSITIVE_INFINITY : 0;
         return other;
-    }
-
-    /** True when the material adds k_a I_a somewhere. */
-    boolean ambient(Scene scene) {
-        return terms.contains(Term.AMBIENT) && !(scene.ambientLight.x == 0 && scene.ambientLight.y == 0 && scene.ambientLight.z == 0);
     }
 }

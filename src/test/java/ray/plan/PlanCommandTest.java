@@ -125,6 +125,10 @@ class PlanCommandTest {
         assertTrue(o.startsWith("plan for " + scene + " (240x180, MaxDepth 10)\n"), o);
         assertTrue(o.contains("  saved: no shadow rays at the 1 pure mirror (noBase): a Glazed material without a base has no direct term"), o);
         assertTrue(o.contains("  refraction          off  no material refracts"), o);
+        Files.writeString(scene, Files.readString(scene).replaceAll("(?m)^AmbientLight .*$", "AmbientLight [0 0 0]"));
+        assertEquals(0, run("--plan", scene.toString()));
+        assertTrue(out().contains("  ambient             off  I_a = 0\n"), out());
+        assertTrue(out().contains("  saved: no ambient term: I_a = 0\n"), out());
         assertFalse(Files.exists(dir.resolve("s.png")), "--plan renders nothing");
         // the command line's overrides are planned too
         assertEquals(0, run("--plan", "--samples", "3", "--sampler", "jittered", scene.toString()));
