@@ -50,6 +50,8 @@ public class Scene {
     private volatile RenderPlan plan;
     private Set<Skip> skips = EnumSet.allOf(Skip.class);
     private boolean cutFaint;
+    /** A plan derived by {@link #derivePlan()} for the next {@link #prepare()} to use. */
+    private RenderPlan pendingPlan;
     /** The names objects were given in the scene file ({@code Material Diffuse red}), for messages and the plan. */
     private final Map<Object, String> names = new IdentityHashMap<>();
 
@@ -65,7 +67,8 @@ public class Scene {
             camera.aspect = (double) width / height;
         }
         camera.init();
-        RenderPlan p = RenderPlan.derive(this, skips, cutFaint);
+        RenderPlan p = pendingPlan != null ? pendingPlan : RenderPlan.derive(this, skips, cutFaint);
+        pendingPlan = null;
         p.apply();
         plan = p;
         accel = Bvh.build(surfaces, this);
@@ -78,11 +81,23 @@ public class Scene {
     }
 
     /**
+     * Derives the render plan now, before {@link #prepare()} (the command line checks its cost before
+     * building anything); the next prepare uses this plan instead of deriving it again, so the plan is
+     * derived once per render. Change the scene after this and prepare derives afresh only if the
+     * change went through {@link #planSkips} or {@link #planCutFaint}.
+     */
+    public synchronized RenderPlan derivePlan() {
+        pendingPlan = RenderPlan.derive(this, skips, cutFaint);
+        return pendingPlan;
+    }
+
+    /**
      * Which of the plan's exact skips the next {@link #prepare()} makes (all by default); tests and
      * {@code --plan}'s "without the plan" line turn them off. Takes effect at the next prepare.
      */
     public void planSkips(Set<Skip> s) {
         skips = s.isEmpty() ? EnumSet.noneOf(Skip.class) : EnumSet.copyOf(s);
+        pendingPlan = null;
     }
 
     /**
@@ -91,6 +106,7 @@ public class Scene {
      */
     public void planCutFaint(boolean cut) {
         cutFaint = cut;
+        pendingPlan = null;
     }
 
     /** True when the next {@link #prepare()} cuts faint mirror paths ({@link #planCutFaint}). */

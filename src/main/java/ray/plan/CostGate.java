@@ -29,7 +29,7 @@ public final class CostGate {
     public static boolean check(String sceneName, Scene scene, boolean allowed, int threads, boolean quiet, java.io.PrintStream err) {
         RenderPlan plan;
         try {
-            plan = RenderPlan.derive(scene, java.util.EnumSet.allOf(Skip.class), scene.cutsFaintPaths());
+            plan = scene.derivePlan();   // the render's own plan: prepare() uses it
         } catch (RuntimeException e) {
             return true;   // a user's class failing in terms(): the render reports it, as it would any failure of that class
         }

@@ -124,4 +124,19 @@ class PlanSkipTest {
         assertNull(CostGate.refusal("t", folded));
         assertNotNull(CostGate.refusal("t", unfolded), "8^10 paths per pixel: a day of rendering without folding");
     }
+
+    /** Derived once per render: the plan the command line's cost check derived is the one the render uses. */
+    @Test
+    void thePlanCheckedBeforeRenderingIsTheOneTheRenderUses() throws Exception {
+        ray.Scene s = PlanFixture.parse(scene("", "Material Diffuse m\n\n" + WALL + LIGHT));
+        RenderPlan checked = s.derivePlan();
+        new ray.render.Renderer(s).render();
+        org.junit.jupiter.api.Assertions.assertSame(checked, s.plan());
+        new ray.render.Renderer(s).render();
+        org.junit.jupiter.api.Assertions.assertNotSame(checked, s.plan(), "a second render derives its own plan");
+        s.derivePlan();
+        s.planSkips(RenderPlan.NO_SKIPS);   // a setting changed after the check: not the stale plan
+        new ray.render.Renderer(s).render();
+        assertTrue(s.plan().skips().isEmpty());
+    }
 }
