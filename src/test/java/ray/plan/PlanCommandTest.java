@@ -94,6 +94,43 @@ class PlanCommandTest {
         }
     }
 
+    /** The keys docs/json.md promises are the keys printed (and in that order at the top level). */
+    @Test
+    void jsonKeysAreTheDocumentedOnes() throws IOException {
+        Path scene = dir.resolve("k.txt");
+        Files.copy(Path.of("scenes/material-glazed.txt"), scene);
+        assertEquals(0, run("--stats", "--json", scene.toString()));
+        assertEquals(List.of("scene", "output", "width", "height", "samplesPerPixel", "maxDepth", "seconds", "cpuSeconds",
+                "peakRssBytes", "bvhBytesPerPrimitive", "rays", "invalidSamples"), topLevelKeys(out().strip()));
+        assertTrue(out().contains("\"seconds\":{\"parse\":"), out());
+        assertEquals(0, run("--plan", "--json", scene.toString()));
+        assertEquals(List.of("scene", "width", "height", "samplesPerPixel", "maxDepth", "effects", "bound", "boundWithoutPlan",
+                "totalBound", "totalBoundWithoutPlan", "cutFaint", "lights", "saved"), topLevelKeys(out().strip()));
+        String doc = Files.readString(Path.of("docs/json.md"));
+        for (String key : List.of("cpuSeconds", "peakRssBytes", "bvhBytesPerPrimitive", "invalidSamples", "boundWithoutPlan",
+                "totalBoundWithoutPlan", "cutFaint", "cameraRays", "directLight", "mirrorReflection", "areaLightSamples", "userRays")) {
+            assertTrue(doc.contains("`" + key + "`") || doc.contains("\"" + key + "\""), key + " is not documented in docs/json.md");
+        }
+    }
+
+    /** The keys of a one-line JSON object's top level, in order (strings hold no braces in these objects). */
+    static List<String> topLevelKeys(String json) {
+        List<String> keys = new ArrayList<>();
+        int depth = 0;
+        Matcher m = Pattern.compile("[{}\\[\\]]|\"((?:[^\"\\\\]|\\\\.)*)\"(:?)").matcher(json);
+        while (m.find()) {
+            String t = m.group();
+            if (t.equals("{") || t.equals("[")) {
+                depth++;
+            } else if (t.equals("}") || t.equals("]")) {
+                depth--;
+            } else if (depth == 1 && !m.group(2).isEmpty()) {
+                keys.add(m.group(1));
+            }
+        }
+        return keys;
+    }
+
     /** Over 1e11 rays: refused before rendering, one line naming the cause and the option, no PNG. */
     @Test
     void anAbsurdSceneIsRefusedBeforeRendering() throws IOException {
