@@ -91,16 +91,18 @@ public final class Renderer {
             stats = new RayStats();
             Image image;
             Film film = null;
+            double estimate = Double.NaN;
             if (sampler instanceof GridSampler && !settings.progressive()) {
                 image = renderGrid(sampler);
             } else {
                 SampledRender s = new SampledRender(this, scene, sampler, settings.targetError(scene), settings.progressive());
                 image = s.run();
                 film = s.film();
+                estimate = s.estimatedRmse();
             }
             double spp = film == null ? ns * ns : (double) film.totalSamples() / ((double) scene.width * scene.height);
             summary = new RenderSummary(sampler.name(), ns, (System.nanoTime() - t0) / 1e9, stats, spp,
-                    film == null ? Double.NaN : RenderSummary.estimatedRmse(film), film);
+                    estimate, film);
             return image;
         } finally {
             scene.maxDepth = savedDepth;
@@ -171,6 +173,11 @@ public final class Renderer {
      * Rethrows the first failure; throws {@link RenderCancelledException} when cancelled.
      */
     void runTiles(Image image, TileWork work) {
+        runTiles(image, work, true);
+    }
+
+    /** {@link #runTiles(Image, TileWork)}, telling the listener about finished tiles only when {@code report}. */
+    void runTiles(Image image, TileWork work, boolean report) {
         int w = scene.width, h = scene.height;
         final int size = tileSize(w, h, threads);
         int tilesX = (w + size - 1) / size, tilesY = (h + size - 1) / size, total = tilesX * tilesY;
@@ -195,7 +202,9 @@ public final class Renderer {
                             int x0 = (tile % tilesX) * size, y0 = (tile / tilesX) * size;
                             int x1 = Math.min(w, x0 + size), y1 = Math.min(h, y0 + size);
                             worker.tile(x0, y0, x1, y1);
-                            listener.tileDone(image, x0, y0, x1, y1, done.incrementAndGet(), total);
+                            if (report) {
+                                listener.tileDone(image, x0, y0, x1, y1, done.incrementAndGet(), total);
+                            }
                         }
                     } catch (Throwable e) {
                         synchronized (failure) {
