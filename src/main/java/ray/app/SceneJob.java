@@ -183,6 +183,9 @@ final class SceneJob {
                 }
                 summary = err;
             } else {
+                if (!main.quiet && "a FIFO".equals(PngWriter.kind(target.path()))) {
+                    err.println(name + ": writing the image into the FIFO " + target + " (waits until something reads it)");
+                }
                 pending.commit(image);
                 outputs.wrote(scenePath, target.path());
             }

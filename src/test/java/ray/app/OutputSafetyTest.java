@@ -128,8 +128,10 @@ class OutputSafetyTest {
         });
         t.setDaemon(true);      // if the FIFO were replaced, this open would wait forever for a writer
         t.start();
-        Run r = assertTimeoutPreemptively(Duration.ofSeconds(20), () -> run("-q", "-o", fifo.toString(), scene.toString()));
+        Run r = assertTimeoutPreemptively(Duration.ofSeconds(20), () -> run("-o", fifo.toString(), scene.toString()));
         assertEquals(0, r.status(), r.err());
+        assertEquals(List.of(scene + ": writing the image into the FIFO " + fifo + " (waits until something reads it)"), r.errLines(),
+                "says what it waits for");
         assertEquals("a FIFO", ray.render.PngWriter.kind(fifo), "still a FIFO");
         byte[] png = reader.get(20, java.util.concurrent.TimeUnit.SECONDS);
         assertEquals((byte) 0x89, png[0]);
