@@ -115,7 +115,7 @@ class CommandLineProcessTest {
         Files.writeString(dir.resolve("good.txt"), GOOD);
         Files.writeString(dir.resolve("quit.txt"), sceneWith("Quitter"));
         Files.writeString(dir.resolve("after.txt"), GOOD);
-        Files.write(dir.resolve("quit.png"), new byte[] {1, 2, 3});
+        Files.write(dir.resolve("quit.png"), MainBadInputTest.oldPng());
         Result r = raytracer(classes, null, null, "-q", "helper.txt", "good.txt", "quit.txt", "after.txt");
         assertEquals(1, r.status(), r.err());
         List<String> lines = r.errLines();
@@ -124,7 +124,7 @@ class CommandLineProcessTest {
         assertEquals("quit.txt: Quitter.shade called System.exit while the scene was being rendered; the program stopped there "
                 + "and no image was written", lines.get(1));
         assertTrue(Files.size(dir.resolve("good.png")) > 0);
-        assertArrayEquals(new byte[] {1, 2, 3}, Files.readAllBytes(dir.resolve("quit.png")), "the old image stays");
+        assertArrayEquals(MainBadInputTest.oldPng(), Files.readAllBytes(dir.resolve("quit.png")), "the old image stays");
         assertFalse(Files.exists(dir.resolve("helper.png")));
         try (var s = Files.list(dir)) {
             assertEquals(List.of(), s.map(p -> p.getFileName().toString()).filter(n -> n.endsWith(".tmp")).toList(), "no temporary file left");

@@ -239,6 +239,19 @@ class OutputSafetyTest {
         assertTrue(Files.exists(foreign), "a name not of our pattern is kept");
     }
 
+    /** `-o other.txt scene.txt` (a slip of the fingers) never turns a text file into a PNG. */
+    @Test
+    void anExistingFileThatIsNotAPngIsNeverReplaced() throws IOException {
+        Path scene = write("a.txt", GOOD), notes = write("notes.txt", "my notes\n"), empty = write("empty.txt", "");
+        Run r = run("-q", "-o", notes.toString(), scene.toString());
+        assertEquals(1, r.status());
+        assertEquals(List.of(scene + ": " + notes + " exists and is not a PNG image; it is left as it is (remove it, or name another file)"),
+                r.errLines());
+        assertEquals("my notes\n", Files.readString(notes));
+        assertEquals(0, run("-q", "-o", empty.toString(), scene.toString()).status(), "an empty file may be replaced");
+        assertEquals(0, run("-q", "-o", empty.toString(), scene.toString()).status(), "and then a PNG");
+    }
+
     /** A scene named like an option, after --, is a scene (a name starting with @: CommandLineProcessTest). */
     @Test
     void dashNamesAfterDoubleDashAreScenes() throws IOException {
