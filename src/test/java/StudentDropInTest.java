@@ -22,7 +22,7 @@ import ray.render.Renderer;
 
 /**
  * The project's key promise: a student's own Surface, Material and Light, written in the default
- * package against the 2003 framework API only (Plane, Checker, ConstantLight, FlatMirror, Metal, Tinted
+ * package against the 2003 framework API only (StudentPlane, Checker, ConstantLight, FlatMirror, Metal, Tinted
  * beside this file), are found by simple name from a scene file and rendered like built-in ones.
  */
 class StudentDropInTest {
@@ -69,7 +69,7 @@ class StudentDropInTest {
             Vector3d color2 [0.2 0.4 0.6]
             double size 1
 
-            Surface Plane
+            Surface StudentPlane
             Vector3d point [0 0 0]
             Vector3d normal [0 1 0]
             ref material board
@@ -98,7 +98,7 @@ class StudentDropInTest {
     @Test
     void studentClassesAreFoundBySimpleNameInTheDefaultPackage() throws Exception {
         Scene s = parse(CHECKER_SCENE);
-        assertSame(Plane.class, s.surfaces.get(0).getClass());
+        assertSame(StudentPlane.class, s.surfaces.get(0).getClass());
         assertSame(Checker.class, s.materials.get(0).getClass());
         assertSame(ConstantLight.class, s.lights.get(1).getClass());
         assertEquals(new Vector3d(0.2, 0.4, 0.6), ((Checker) s.materials.get(0)).color2);
@@ -138,7 +138,7 @@ class StudentDropInTest {
                 Vector3d ambientColor [0.5 0 0]
                 Vector3d diffuseColor [0 0 0]
 
-                Surface Plane ground
+                Surface StudentPlane ground
                 Vector3d point [0 0 0]
                 Vector3d normal [0 1 0]
                 ref material floor
@@ -155,7 +155,7 @@ class StudentDropInTest {
                 Light ConstantLight
                 Vector3d intensity [0.25 0.25 0.25]
                 """);
-        Plane ground = (Plane) s.surfaces.get(0);
+        StudentPlane ground = (StudentPlane) s.surfaces.get(0);
         for (int threads : new int[] {1, 2}) {
             Image img = new Renderer(s).threads(threads).render();
             for (int j = 0; j < 8; j++) {
@@ -202,12 +202,12 @@ class StudentDropInTest {
                 Vector3d eye [0 0 0]
                 Vector3d target [0 0 1]
 
-                Surface Plane
+                Surface StudentPlane
                 Vector3d point [0 0 1]
                 Vector3d normal [0 0 -1]
                 ref material %s
 
-                Surface Plane
+                Surface StudentPlane
                 Vector3d point [0 0 -1]
                 Vector3d normal [0 0 1]
                 ref material %s
@@ -269,12 +269,12 @@ class StudentDropInTest {
                 Vector3d diffuseColor [1 1 1]
                 double reflectance 0
 
-                Surface Plane
+                Surface StudentPlane
                 Vector3d point [0 0 2]
                 Vector3d normal [0 0 -1]
                 ref material glass
 
-                Surface Plane
+                Surface StudentPlane
                 Vector3d point [0 0 -2]
                 Vector3d normal [0 0 1]
                 ref material metal

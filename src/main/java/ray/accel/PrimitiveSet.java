@@ -27,6 +27,18 @@ public abstract class PrimitiveSet {
     }
 
     private int id, bit;
+    /** The scene surface each primitive stands for, in the set's order. */
+    protected final Surface[] surfaces;
+
+    /** A set of {@code surfaces}, in the order given (leaf order). */
+    protected PrimitiveSet(List<Surface> surfaces) {
+        this.surfaces = surfaces.toArray(new Surface[0]);
+    }
+
+    /** For a set that keeps its surfaces itself (then override {@link #size} and {@link #surface}). */
+    protected PrimitiveSet() {
+        this.surfaces = new Surface[0];
+    }
 
     /** This set's number in its BVH: its scratch is at {@code id * SCRATCH}, its set-up bit {@code 1 << id}. */
     public final int id() {
@@ -52,10 +64,14 @@ public abstract class PrimitiveSet {
     }
 
     /** Number of primitives. */
-    public abstract int size();
+    public int size() {
+        return surfaces.length;
+    }
 
     /** The scene surface primitive {@code i} stands for ({@code record.surface} of its hits). */
-    public abstract Surface surface(int i);
+    public Surface surface(int i) {
+        return surfaces[i];
+    }
 
     /**
      * Tests primitives {@code [from, to)} (in leaf slots {@code slot, slot + 1, ...}) against the query's

@@ -20,20 +20,9 @@ final class SurfaceSet extends PrimitiveSet {
         }
     };
 
-    private final Surface[] surfaces;
 
     SurfaceSet(List<Surface> surfaces) {
-        this.surfaces = surfaces.toArray(new Surface[0]);
-    }
-
-    @Override
-    public int size() {
-        return surfaces.length;
-    }
-
-    @Override
-    public Surface surface(int i) {
-        return surfaces[i];
+        super(surfaces);
     }
 
     @Override

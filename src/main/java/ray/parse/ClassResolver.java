@@ -139,7 +139,7 @@ final class ClassResolver {
     static String builtIns(String type) {
         switch (type) {
             case "Camera": return "Camera";
-            case "Surface": return "Sphere, Triangle";
+            case "Surface": return "Sphere, Triangle, Plane, Disc, Box, Cylinder, Cone, Torus";
             case "Material": return "Diffuse, BlinnPhong, GlazedMaterial (or Glazed), DielectricMaterial (or Dielectric)";
             default: return "PointLight, SpotLight, AreaLight";
         }

@@ -16,10 +16,9 @@ final class SphereSet extends PrimitiveSet {
     };
 
     private final double[] s;
-    private final Surface[] surfaces;
 
     private SphereSet(List<Surface> list) {
-        surfaces = list.toArray(new Surface[0]);
+        super(list);
         s = new double[4 * surfaces.length];
         for (int i = 0; i < surfaces.length; i++) {
             Sphere sp = (Sphere) surfaces[i];
@@ -28,16 +27,6 @@ final class SphereSet extends PrimitiveSet {
             s[4 * i + 2] = sp.center.z;
             s[4 * i + 3] = sp.radius;
         }
-    }
-
-    @Override
-    public int size() {
-        return surfaces.length;
-    }
-
-    @Override
-    public Surface surface(int i) {
-        return surfaces[i];
     }
 
     @Override

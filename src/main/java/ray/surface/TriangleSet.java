@@ -20,10 +20,9 @@ final class TriangleSet extends PrimitiveSet {
     };
 
     private final double[] v;
-    private final Surface[] surfaces;
 
     private TriangleSet(List<Surface> list) {
-        surfaces = list.toArray(new Surface[0]);
+        super(list);
         v = new double[9 * surfaces.length];
         for (int i = 0; i < surfaces.length; i++) {
             Triangle t = (Triangle) surfaces[i];
@@ -32,16 +31,6 @@ final class TriangleSet extends PrimitiveSet {
             v[o + 3] = t.v1.x; v[o + 4] = t.v1.y; v[o + 5] = t.v1.z;
             v[o + 6] = t.v2.x; v[o + 7] = t.v2.y; v[o + 8] = t.v2.z;
         }
-    }
-
-    @Override
-    public int size() {
-        return surfaces.length;
-    }
-
-    @Override
-    public Surface surface(int i) {
-        return surfaces[i];
     }
 
     /** Offset of this set's ray set-up in the query's scratch, made on the ray's first test. */

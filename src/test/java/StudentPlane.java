@@ -7,16 +7,18 @@ import ray.surface.Surface;
 /**
  * A student's infinite plane, written only against the 2003 framework API (only the imports are new):
  * a naive absolute epsilon, no bounds(), and the record's normal pointed straight at this object's
- * own field, as students did. The project must cope with all three.
+ * own field, as students did. The project must cope with all three. (Named StudentPlane, not Plane:
+ * a default-package class shadows the built-in {@code ray.surface.Plane} of the same name, and this one
+ * is on the class path of every test.)
  *
  * <pre>
- * Surface Plane
+ * Surface StudentPlane
  * Vector3d point [0 0 0]
  * Vector3d normal [0 1 0]   # unit length
  * ref material floor
  * </pre>
  */
-public class Plane extends Surface {
+public class StudentPlane extends Surface {
 
     public Vector3d point = new Vector3d(0, 0, 0);
     public Vector3d normal = new Vector3d(0, 1, 0);
