@@ -4,10 +4,11 @@ import javax.vecmath.Vector3d;
 import ray.TraceContext;
 
 /**
- * One render thread's adaptive sampling of a pixel: take the {@link AdaptiveSampler}'s first batch,
- * then double the count while the estimated standard error of the pixel's mean (s / sqrt(n) of the
- * samples clamped to [0, 1], averaged over r, g, b in squares, in 8-bit steps) is not below the target,
- * up to all n_s x n_s samples. The pixel is the sum of the samples taken, added in grid order, over
+ * One render thread's adaptive sampling of a pixel: from the {@link AdaptiveSampler}'s first batch
+ * (taken by an earlier pass), double the count while the estimated standard error of the pixel's mean
+ * (s / sqrt(n) of the samples clamped to [0, 1], averaged over r, g, b in squares, in 8-bit steps) is
+ * not below the target, up to all n_s x n_s samples; a nudged pixel (see {@code SampledRender}) takes
+ * at least {@link #NUDGED} whatever its first batch says. The pixel is the sum of the samples taken, added in grid order, over
  * their count: with every sample taken it is the grid's pixel bit for bit. Scratch arrays are made once
  * per thread.
  */
@@ -21,6 +22,8 @@ final class AdaptivePixel {
     private final boolean[] taken;
     private final double[] sum = new double[3], mean = new double[3], m2 = new double[3];
     private final Vector3d c = new Vector3d();
+    /** Samples a nudged pixel takes at least (a feature its first four missed shows this way). */
+    static final int NUDGED = 16;
 
     AdaptivePixel(AdaptiveSampler sampler, double target, SampledRender render, TraceContext ctx) {
         this.sampler = sampler;
@@ -32,27 +35,29 @@ final class AdaptivePixel {
         taken = new boolean[all];
     }
 
-    void render(int x, int y, Film film) {
-        int all = sampler.samplesPerPixel();
+    /**
+     * Finishes pixel (x, y): its first batch is in {@code first} (and the film); {@code nudged} asks for
+     * at least {@link #NUDGED} samples whatever the first batch says.
+     */
+    void render(int x, int y, Film film, double[] first, boolean nudged) {
+        int all = sampler.samplesPerPixel(), b0 = sampler.firstBatch();
         java.util.Arrays.fill(taken, false);
         for (int ch = 0; ch < 3; ch++) {
             mean[ch] = 0;
             m2[ch] = 0;
         }
         int k = 0;
-        if (film.count(x, y) == 1) {   // the progressive first pass took the first sample already
-            c.set(film.sum(x, y, 0), film.sum(x, y, 1), film.sum(x, y, 2));
-            keep(sampler.order(0), ++k);
+        for (int base = 3 * b0 * (y * film.width + x); k < b0; ) {
+            c.set(first[base + 3 * k], first[base + 3 * k + 1], first[base + 3 * k + 2]);
+            keep(sampler.order(k), ++k);
         }
         double limit = target * target;
-        for (int goal = sampler.firstBatch(); ; goal = Math.min(all, 2 * k)) {
-            for (; k < goal; ) {
+        int least = nudged ? Math.min(all, NUDGED) : b0;
+        while (k < all && (k < least || !((m2[0] + m2[1] + m2[2]) / (3.0 * (k - 1) * k) * 255 * 255 < limit))) {
+            for (int goal = Math.min(all, 2 * k); k < goal; ) {
                 int index = sampler.order(k);
                 render.trace(ctx, x, y, index, c);
                 keep(index, ++k);
-            }
-            if (k == all || (m2[0] + m2[1] + m2[2]) / (3.0 * (k - 1) * k) * 255 * 255 < limit) {
-                break;
             }
         }
         // the pixel's value: taken samples summed in grid order (the grid's own arithmetic)

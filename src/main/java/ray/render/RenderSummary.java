@@ -18,8 +18,8 @@ public final class RenderSummary {
     /** Samples taken over pixels. */
     public final double meanSamplesPerPixel;
     /**
-     * The estimated RMSE of the clamped image against the converged one, in 8-bit steps, from each
-     * pixel's sample variance; NaN for the grid's fast path and with one sample per pixel.
+     * The adaptive sampler's estimate of the RMSE of the clamped image against the converged one, in
+     * 8-bit steps, measured at probe pixels ({@code ErrorProbe}); NaN for the other samplers.
      */
     public final double estimatedRmse;
     /** The film (null for the grid's fast path, which keeps no film). */
@@ -34,21 +34,6 @@ public final class RenderSummary {
         this.meanSamplesPerPixel = meanSamplesPerPixel;
         this.estimatedRmse = estimatedRmse;
         this.film = film;
-    }
-
-    /** The estimated RMSE of a film's clamped image (8-bit steps): sqrt of the mean per-pixel variance of the mean. */
-    static double estimatedRmse(Film film) {
-        double total = 0;
-        for (int y = 0; y < film.height; y++) {
-            for (int x = 0; x < film.width; x++) {
-                double v = film.varianceOfMean(x, y);
-                if (Double.isNaN(v)) {
-                    return Double.NaN;
-                }
-                total += v;
-            }
-        }
-        return Math.sqrt(total / ((double) film.width * film.height));
     }
 
     /** One line for the render summary, e.g. {@code adaptive: 5.3 samples per pixel, estimated error 0.41 (8-bit steps RMSE)}. */

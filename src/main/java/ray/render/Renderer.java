@@ -91,16 +91,18 @@ public final class Renderer {
             stats = new RayStats();
             Image image;
             Film film = null;
+            double estimate = Double.NaN;
             if (sampler instanceof GridSampler && !settings.progressive()) {
                 image = renderGrid(sampler);
             } else {
                 SampledRender s = new SampledRender(this, scene, sampler, settings.targetError(scene), settings.progressive());
                 image = s.run();
                 film = s.film();
+                estimate = s.estimatedRmse();
             }
             double spp = film == null ? ns * ns : (double) film.totalSamples() / ((double) scene.width * scene.height);
             summary = new RenderSummary(sampler.name(), ns, (System.nanoTime() - t0) / 1e9, stats, spp,
-                    film == null ? Double.NaN : RenderSummary.estimatedRmse(film), film);
+                    estimate, film);
             return image;
         } finally {
             scene.maxDepth = savedDepth;
@@ -171,6 +173,11 @@ public final class Renderer {
      * Rethrows the first failure; throws {@link RenderCancelledException} when cancelled.
      */
     void runTiles(Image image, TileWork work) {
+        runTiles(image, work, true);
+    }
+
+    /** {@link #runTiles(Image, TileWork)}, telling the listener about finished tiles only when {@code report}. */
+    void runTiles(Image image, TileWork work, boolean report) {
         int w = scene.width, h = scene.height;
         int tilesX = (w + TILE - 1) / TILE, tilesY = (h + TILE - 1) / TILE, total = tilesX * tilesY;
         AtomicInteger next = new AtomicInteger(), done = new AtomicInteger();
@@ -192,7 +199,9 @@ public final class Renderer {
                             int x0 = (tile % tilesX) * TILE, y0 = (tile / tilesX) * TILE;
                             int x1 = Math.min(w, x0 + TILE), y1 = Math.min(h, y0 + TILE);
                             worker.tile(x0, y0, x1, y1);
-                            listener.tileDone(image, x0, y0, x1, y1, done.incrementAndGet(), total);
+                            if (report) {
+                                listener.tileDone(image, x0, y0, x1, y1, done.incrementAndGet(), total);
+                            }
                         }
                     } catch (Throwable e) {
                         synchronized (failure) {

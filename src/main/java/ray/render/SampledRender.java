@@ -8,11 +8,16 @@ import ray.TraceContext;
 /**
  * A render through a {@link Film} with any {@link Sampler}: every pixel takes its samples in index
  * order (all of them, or in passes of 1, 4, 16, ... samples per pixel when progressive), or, for the
- * {@link AdaptiveSampler}, a first batch and then more only while the pixel's estimated standard error
- * is at or above the target. The film sums each pixel's samples in index order, so the pixels do not
- * depend on how the work is split into passes or threads.
+ * {@link AdaptiveSampler}, two passes: a first batch for every pixel (kept), then each pixel on its own,
+ * taking more only while its estimated standard error is at or above the target, and at least a few
+ * more near a possible edge ({@link #nudgedPixels}); then the {@link ErrorProbe} measures the result.
+ * The film sums each pixel's samples in index order, so the pixels do not depend on how the work is
+ * split into passes or threads.
  */
 final class SampledRender {
+
+    /** Neighbouring first-batch means further apart than this (8-bit steps) mark a possible edge. */
+    static final double EDGE_STEPS = 8;
 
     private final Renderer renderer;
     private final Scene scene;
@@ -21,6 +26,7 @@ final class SampledRender {
     private final boolean progressive;
     private final Film film;
     private final Image image;
+    private double estimatedRmse = Double.NaN;
 
     SampledRender(Renderer renderer, Scene scene, Sampler sampler, double targetError, boolean progressive) {
         this.renderer = renderer;
@@ -36,14 +42,20 @@ final class SampledRender {
         return film;
     }
 
+    /** The adaptive render's measured estimate of its RMSE in 8-bit steps (NaN for the other samplers). */
+    double estimatedRmse() {
+        return estimatedRmse;
+    }
+
     Image run() {
         int all = sampler.samplesPerPixel();
         if (sampler instanceof AdaptiveSampler a) {
-            int passes = progressive ? 2 : 1;
-            if (progressive) {   // a first look: each pixel's first sample, reused by the adaptive pass
-                pass(new Samples(a.order(0), a.order(0) + 1), 0, passes);
-            }
-            pass(new Adaptive(a), passes - 1, passes);
+            // first every pixel's first batch (kept, to be reused), then each pixel refined on its own
+            int b0 = a.firstBatch();
+            double[] first = new double[3 * b0 * scene.width * scene.height];
+            pass(new FirstBatch(a, first), 0, 2);
+            pass(new Adaptive(a, first, nudgedPixels()), 1, 2);
+            estimatedRmse = new ErrorProbe(this, renderer, scene, film, image).measure(a.side());
             return image;
         }
         int[] bounds = progressive ? passBounds(all) : new int[] {0, all};
@@ -51,6 +63,57 @@ final class SampledRender {
             pass(new Samples(bounds[p], bounds[p + 1]), p, bounds.length - 1);
         }
         return image;
+    }
+
+    /**
+     * Pixels whose first batch gives no sign of an edge nearby, so that they may stop there: a pixel is
+     * nudged (returns true) when its own samples or a neighbour's disagree (estimated standard error not
+     * below the target), or when its mean differs from a neighbour's by more than {@link #EDGE_STEPS}
+     * 8-bit steps in a channel (an edge runs between them that the first samples of either may have
+     * missed: a feature smaller than the gaps between four samples shows only this way).
+     */
+    private boolean[] nudgedPixels() {
+        int w = scene.width, h = scene.height;
+        boolean[] busy = new boolean[w * h], nudged = new boolean[w * h];
+        double limit = target * target, edge = EDGE_STEPS / 255.0;
+        double[] mean = new double[3 * w * h];
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++) {
+                int p = y * w + x, n = film.count(x, y);
+                for (int c = 0; c < 3; c++) {
+                    mean[3 * p + c] = Film.clamp(film.sum(x, y, c) / n);
+                }
+                busy[p] = !(film.varianceOfMean(x, y) < limit);
+            }
+        }
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++) {
+                int p = y * w + x;
+                // the right and the three lower neighbours (each pair once): both pixels of a differing pair
+                for (int d = 0; d < 4; d++) {
+                    int qx = x + (d == 0 || d == 2 ? 1 : d == 3 ? -1 : 0), qy = y + (d == 0 ? 0 : 1);
+                    if (qx >= 0 && qx < w && qy < h && differ(mean, p, qy * w + qx, edge)) {
+                        nudged[p] = true;
+                        nudged[qy * w + qx] = true;
+                    }
+                }
+            }
+        }
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++) {
+                for (int j = Math.max(0, y - 1); j <= Math.min(h - 1, y + 1); j++) {
+                    for (int i = Math.max(0, x - 1); i <= Math.min(w - 1, x + 1); i++) {
+                        nudged[y * w + x] |= busy[j * w + i];
+                    }
+                }
+            }
+        }
+        return nudged;
+    }
+
+    private static boolean differ(double[] mean, int p, int q, double edge) {
+        return Math.abs(mean[3 * p] - mean[3 * q]) > edge || Math.abs(mean[3 * p + 1] - mean[3 * q + 1]) > edge
+                || Math.abs(mean[3 * p + 2] - mean[3 * q + 2]) > edge;
     }
 
     /** Cumulative samples per pixel at the end of each progressive pass: 0, 1, 4, 16, ..., all. */
@@ -78,6 +141,11 @@ final class SampledRender {
      * and replaced by black, so it never reaches a pixel.
      */
     void trace(TraceContext ctx, int x, int y, int index, Vector3d c) {
+        trace(ctx, sampler, x, y, index, c);
+    }
+
+    /** {@link #trace(TraceContext, int, int, int, Vector3d)} with another sampler. */
+    void trace(TraceContext ctx, Sampler sampler, int x, int y, int index, Vector3d c) {
         ctx.sample.start(sampler, x, y, index);
         double dx = sampler.get(x, y, index, 0), dy = sampler.get(x, y, index, 1);
         Ray ray = ctx.ray(0);
@@ -118,23 +186,63 @@ final class SampledRender {
         }
     }
 
-    /** Each pixel finished in one go by the adaptive rule; a sample taken by a first pass is reused. */
-    private final class Adaptive implements Renderer.TileWork {
+    /** The adaptive sampler's first batch for every pixel, added to the film and kept in {@code first}. */
+    private final class FirstBatch implements Renderer.TileWork {
         private final AdaptiveSampler a;
+        private final double[] first;
 
-        Adaptive(AdaptiveSampler a) {
+        FirstBatch(AdaptiveSampler a, double[] first) {
             this.a = a;
+            this.first = first;
         }
 
         @Override
         public Renderer.TileWorker worker(TraceContext ctx) {
-            AdaptivePixel pixel = new AdaptivePixel(a, target, SampledRender.this, ctx);
+            Vector3d c = new Vector3d();
+            int b0 = a.firstBatch();
             return new Renderer.TileWorker() {
                 @Override
                 public void tile(int x0, int y0, int x1, int y1) {
                     for (int y = y0; y < y1; y++) {
                         for (int x = x0; x < x1; x++) {
-                            pixel.render(x, y, film);
+                            int base = 3 * b0 * (y * scene.width + x);
+                            for (int k = 0; k < b0; k++) {
+                                trace(ctx, x, y, a.order(k), c);
+                                first[base + 3 * k] = c.x;
+                                first[base + 3 * k + 1] = c.y;
+                                first[base + 3 * k + 2] = c.z;
+                                film.add(x, y, c.x, c.y, c.z);
+                            }
+                        }
+                    }
+                    film.writeTo(image, x0, y0, x1, y1);
+                }
+            };
+        }
+    }
+
+    /** Each pixel finished in one go by the adaptive rule, starting from its kept first batch. */
+    private final class Adaptive implements Renderer.TileWork {
+        private final AdaptiveSampler a;
+        private final double[] first;
+        private final boolean[] nudged;
+
+        Adaptive(AdaptiveSampler a, double[] first, boolean[] nudged) {
+            this.a = a;
+            this.first = first;
+            this.nudged = nudged;
+        }
+
+        @Override
+        public Renderer.TileWorker worker(TraceContext ctx) {
+            AdaptivePixel pixel = new AdaptivePixel(a, target, SampledRender.this, ctx);
+            int w = scene.width, h = scene.height;
+            return new Renderer.TileWorker() {
+                @Override
+                public void tile(int x0, int y0, int x1, int y1) {
+                    for (int y = y0; y < y1; y++) {
+                        for (int x = x0; x < x1; x++) {
+                            pixel.render(x, y, film, first, nudged[y * w + x]);
                         }
                     }
                     film.writeTo(image, x0, y0, x1, y1);
