@@ -3,7 +3,6 @@ package ray.light;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
-import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
@@ -14,6 +13,7 @@ import ray.Camera;
 import ray.IntersectionRecord;
 import ray.Scene;
 import ray.parse.Parser;
+import ray.parse.ObjectErrors;
 import ray.parse.SceneFormatException;
 import ray.render.Image;
 
@@ -154,10 +154,7 @@ class SpotLightTest {
                 {"double exponent -1", "exponent must be a finite number >= 0, got -1.0"},
         };
         for (String[] c : cases) {
-            String text = "Width 1\nHeight 1\n\nCamera Camera\n\nLight SpotLight\n" + c[0] + "\n";
-            SceneFormatException e = assertThrows(SceneFormatException.class, () -> Parser.parse(text, "bad.txt", new ArrayList<>()));
-            assertTrue(e.getMessage().startsWith("bad.txt:6: Light SpotLight: "), e.getMessage());
-            assertTrue(e.getMessage().contains(c[1]), e.getMessage());
+            ObjectErrors.assertRefused("Light SpotLight", c[0], c[1]);
         }
     }
 }
