@@ -26,7 +26,8 @@ import ray.accel.Aabb;
  * a hit of the result where the set operation's in/out state changes. The hits are fetched lazily, the
  * nearest first, by asking the operand again on the same ray with its start moved just past the last
  * hit ({@code tMin = Math.nextUp(t)}): an operand's roots on a fixed ray do not depend on {@code tMin},
- * so no root is skipped or seen twice. Whether the ray is inside an operand just before its next hit is
+ * so no root is skipped; a root reported again a few ulps below the new start (a kernel whose range
+ * test rounds) is stepped over, and only a root numerically on top of the last one could be. Whether the ray is inside an operand just before its next hit is
  * read from that hit's {@code frontFace} (a ray leaving through a back face was inside), never counted,
  * so rays starting inside an operand are classified right and a rounding-doubled root (a ray through a
  * mesh edge) cannot flip the state twice. Roots at exactly the same t on both operands (a surface shared
@@ -78,6 +79,7 @@ public class CSG extends Surface {
         }
         if (!s.isClosed()) {
             throw new IllegalArgumentException(side + " operand " + s.getClass().getSimpleName() + " is not a closed surface"
+                    + (s instanceof Mesh m ? ": " + m.notClosedReason() : "")
                     + " (expected Sphere, Box, Cylinder, Cone, Torus, CSG or a closed two-sided Mesh)");
         }
     }
@@ -133,7 +135,8 @@ public class CSG extends Surface {
         q.depth = ray.depth;
         IntersectionRecord[] r = s.recs;
         // r[0]: left's next hit, r[1]: right's next hit; r[2], r[3]: the crossings just passed
-        double tl = next(left, q, ray.tMin, r, 0, scene), tr = next(right, q, ray.tMin, r, 1, scene);
+        double tl = next(left, q, ray.tMin, Double.NEGATIVE_INFINITY, r, 0, scene);
+        double tr = next(right, q, ray.tMin, Double.NEGATIVE_INFINITY, r, 1, scene);
         boolean inL = tl < Double.POSITIVE_INFINITY && !r[0].frontFace;
         boolean inR = tr < Double.POSITIVE_INFINITY && !r[1].frontFace;
         boolean in = inside(inL, inR);
@@ -147,12 +150,12 @@ public class CSG extends Surface {
             // the state just past t is the state just before each operand's next hit
             if (crossL) {
                 swap(r, 0, 2);
-                tl = next(left, q, Math.nextUp(t), r, 0, scene);
+                tl = next(left, q, Math.nextUp(t), t, r, 0, scene);
                 inL = tl < Double.POSITIVE_INFINITY && !r[0].frontFace;
             }
             if (crossR) {
                 swap(r, 1, 3);
-                tr = next(right, q, Math.nextUp(t), r, 1, scene);
+                tr = next(right, q, Math.nextUp(t), t, r, 1, scene);
                 inR = tr < Double.POSITIVE_INFINITY && !r[1].frontFace;
             }
             boolean after = inside(inL, inR);
@@ -167,32 +170,42 @@ public class CSG extends Surface {
     }
 
     /**
-     * The operand's nearest hit at or after {@code tMin} on the query ray, into {@code r[i]}: its t, or
-     * +infinity when there is none.
+     * The operand's nearest hit after {@code after}, asked for from {@code tMin} on the query ray, into
+     * {@code r[i]}: its t, or +infinity when there is none. A kernel's range test rounds (the watertight
+     * triangle compares t times its determinant), so it may report the root just passed again, a few
+     * ulps below {@code tMin}: then the start moves up past it by doubling steps. Only a root within
+     * those few ulps of the last one, numerically the same crossing, can be stepped over.
      */
-    private static double next(Surface s, Ray q, double tMin, IntersectionRecord[] r, int i, Scene scene) {
+    private static double next(Surface s, Ray q, double tMin, double after, IntersectionRecord[] r, int i, Scene scene) {
         IntersectionRecord rec = r[i];
-        q.tMin = tMin;
-        q.tMax = Double.POSITIVE_INFINITY;
-        rec.surface = null;
         javax.vecmath.Vector3d location = rec.location, normal = rec.normal;
-        boolean hit = s.intersects(q, rec, scene);
-        // framework code may point the record's vectors at its own: copy the values back into ours
-        if (rec.location != location) {
-            location.set(rec.location);
-            rec.location = location;
+        double from = tMin;
+        for (int k = 1; k <= 64; k++) {
+            q.tMin = from;
+            q.tMax = Double.POSITIVE_INFINITY;
+            rec.surface = null;
+            boolean hit = s.intersects(q, rec, scene);
+            // framework code may point the record's vectors at its own: copy the values back into ours
+            if (rec.location != location) {
+                location.set(rec.location);
+                rec.location = location;
+            }
+            if (rec.normal != normal) {
+                normal.set(rec.normal);
+                rec.normal = normal;
+            }
+            if (!hit || Double.isNaN(rec.t)) {
+                return Double.POSITIVE_INFINITY;
+            }
+            if (rec.t > after) {
+                if (rec.surface == null) {
+                    rec.surface = s;
+                }
+                return rec.t;
+            }
+            from = after + Math.scalb(Math.max(Math.ulp(after), Double.MIN_NORMAL), k);
         }
-        if (rec.normal != normal) {
-            normal.set(rec.normal);
-            rec.normal = normal;
-        }
-        if (!hit || !(rec.t >= tMin)) {
-            return Double.POSITIVE_INFINITY;     // a surface answering before tMin would never let the loop end
-        }
-        if (rec.surface == null) {
-            rec.surface = s;
-        }
-        return rec.t;
+        return Double.POSITIVE_INFINITY;     // a surface that keeps answering behind its start: no further hit
     }
 
     private static void swap(IntersectionRecord[] r, int i, int j) {
