@@ -74,7 +74,8 @@ final class SampledRender {
      */
     private boolean[] nudgedPixels() {
         int w = scene.width, h = scene.height;
-        boolean[] busy = new boolean[w * h], nudged = new boolean[w * h];
+        double[] busy = new double[w * h];
+        boolean[] nudged = new boolean[w * h];
         double limit = target * target, edge = EDGE_STEPS / 255.0;
         double[] mean = new double[3 * w * h];
         for (int y = 0; y < h; y++) {
@@ -83,7 +84,7 @@ final class SampledRender {
                 for (int c = 0; c < 3; c++) {
                     mean[3 * p + c] = Film.clamp(film.sum(x, y, c) / n);
                 }
-                busy[p] = !(film.varianceOfMean(x, y) < limit);
+                busy[p] = film.varianceOfMean(x, y) < limit ? 0 : 1;
             }
         }
         for (int y = 0; y < h; y++) {
@@ -99,16 +100,28 @@ final class SampledRender {
                 }
             }
         }
-        for (int y = 0; y < h; y++) {
-            for (int x = 0; x < w; x++) {
-                for (int j = Math.max(0, y - 1); j <= Math.min(h - 1, y + 1); j++) {
-                    for (int i = Math.max(0, x - 1); i <= Math.min(w - 1, x + 1); i++) {
-                        nudged[y * w + x] |= busy[j * w + i];
-                    }
-                }
-            }
+        double[] near = neighbourhoodMax(busy, w, h);
+        for (int p = 0; p < w * h; p++) {
+            nudged[p] |= near[p] > 0;
         }
         return nudged;
+    }
+
+    /** The largest of {@code v} over each pixel's 3 x 3 neighbourhood (v row by row, w x h). */
+    static double[] neighbourhoodMax(double[] v, int w, int h) {
+        double[] out = new double[w * h];
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++) {
+                double m = v[y * w + x];
+                for (int j = Math.max(0, y - 1); j <= Math.min(h - 1, y + 1); j++) {
+                    for (int i = Math.max(0, x - 1); i <= Math.min(w - 1, x + 1); i++) {
+                        m = Math.max(m, v[j * w + i]);
+                    }
+                }
+                out[y * w + x] = m;
+            }
+        }
+        return out;
     }
 
     private static boolean differ(double[] mean, int p, int q, double edge) {
