@@ -91,9 +91,9 @@ public class Box extends Surface {
 
     private void fill(Ray ray, double t, int face, boolean front, IntersectionRecord rec) {
         Vector3d o = ray.origin, d = ray.direction;
-        double x = clamp(o.x + t * d.x, minPoint.x, maxPoint.x);
-        double y = clamp(o.y + t * d.y, minPoint.y, maxPoint.y);
-        double z = clamp(o.z + t * d.z, minPoint.z, maxPoint.z);
+        double x = Frame.clamp(o.x + t * d.x, minPoint.x, maxPoint.x);
+        double y = Frame.clamp(o.y + t * d.y, minPoint.y, maxPoint.y);
+        double z = Frame.clamp(o.z + t * d.z, minPoint.z, maxPoint.z);
         int axis = face % 3;
         double side = face < 3 ? -1 : 1;
         double v = face < 3 ? get(minPoint, axis) : get(maxPoint, axis);
@@ -108,9 +108,6 @@ public class Box extends Surface {
         return axis == 0 ? v.x : axis == 1 ? v.y : v.z;
     }
 
-    private static double clamp(double v, double lo, double hi) {
-        return v < lo ? lo : v > hi ? hi : v;
-    }
 
     /** True when (x, y, z) lies strictly inside the box. */
     public boolean isInside(double x, double y, double z) {

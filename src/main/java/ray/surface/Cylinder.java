@@ -93,7 +93,7 @@ public class Cylinder extends AxialSurface {
         double nx = 0, ny = 0, nz;
         double rho = Math.sqrt(x * x + y * y);
         if (part == SIDE) {
-            z = clamp(oz + t * dz, 0, h);
+            z = Frame.clamp(oz + t * dz, 0, h);
             if (rho > 0) {
                 nx = x / rho;
                 ny = y / rho;
@@ -115,9 +115,6 @@ public class Cylinder extends AxialSurface {
         return true;
     }
 
-    static double clamp(double v, double lo, double hi) {
-        return v < lo ? lo : v > hi ? hi : v;
-    }
 
     @Override
     double radiusAt(double z) {

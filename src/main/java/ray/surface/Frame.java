@@ -92,6 +92,11 @@ final class Frame {
         }
     }
 
+    /** v limited to [lo, hi]. */
+    static double clamp(double v, double lo, double hi) {
+        return v < lo ? lo : v > hi ? hi : v;
+    }
+
     /** Largest |coordinate| of a vector. */
     static double maxAbs(Vector3d v) {
         return Math.max(Math.abs(v.x), Math.max(Math.abs(v.y), Math.abs(v.z)));

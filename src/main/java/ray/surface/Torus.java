@@ -104,8 +104,8 @@ public class Torus extends Surface {
         if (disc > 0) {
             double q = -0.5 * (6 * c3 + Math.copySign(Math.sqrt(disc), c3));
             double a = q / 12, b = q == 0 ? -a : 2 * c2 / q;
-            s1 = Cylinder.clamp(Math.min(a, b), -half, half);
-            s2 = Cylinder.clamp(Math.max(a, b), -half, half);
+            s1 = Frame.clamp(Math.min(a, b), -half, half);
+            s2 = Frame.clamp(Math.max(a, b), -half, half);
         }
         double prev = -half;
         for (int seg = 0; seg < 4; seg++) {

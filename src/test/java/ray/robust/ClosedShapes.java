@@ -7,6 +7,7 @@ import java.math.BigDecimal;
 import java.math.MathContext;
 import java.util.Random;
 import javax.vecmath.Vector3d;
+import ray.surface.AxialSurface;
 import ray.surface.Box;
 import ray.surface.Cone;
 import ray.surface.Cylinder;
@@ -54,7 +55,7 @@ abstract class ClosedShapes {
                 Vector3d axis = unit(r);
                 axis.scale(s * logUniform(r, 0.1, 10));
                 double rad = s * logUniform(r, 0.1, 10);
-                return kind == 1 ? new CylinderShape(c, axis, rad) : new ConeShape(c, axis, rad);
+                return new AxialShape(kind == 1 ? new Cylinder() : new Cone(), c, axis, rad);
             }
             default: {
                 double big = s * logUniform(r, 0.5, 2);
@@ -124,71 +125,46 @@ abstract class ClosedShapes {
         }
     }
 
-    static final class CylinderShape extends ClosedShapes {
-        final Cylinder c;
+    /** A Cylinder or a Cone (both AxialSurface: base, axis, radius). */
+    static final class AxialShape extends ClosedShapes {
+        final AxialSurface c;
+        final boolean cone;
 
-        CylinderShape(Vector3d base, Vector3d axis, double radius) {
-            super(make(base, axis, radius));
-            this.c = (Cylinder) surface;
+        AxialShape(AxialSurface c, Vector3d base, Vector3d axis, double radius) {
+            super(set(c, base, axis, radius));
+            this.c = c;
+            this.cone = c instanceof Cone;
         }
 
-        private static Cylinder make(Vector3d base, Vector3d axis, double radius) {
-            Cylinder c = new Cylinder();
+        private static AxialSurface set(AxialSurface c, Vector3d base, Vector3d axis, double radius) {
             c.base.set(base);
             c.axis.set(axis);
             c.radius = radius;
             return c;
         }
 
+        /**
+         * Cylinder: max(rho - r, -z, z - h). Cone: max of the distance outside the side (measured
+         * perpendicular to it) and below the base.
+         */
         @Override
         double residual(Vector3d p) {
             BigDecimal[] q = cylindrical(p, c.base, c.axis);
-            return q[0].subtract(bd(c.radius)).max(q[1].negate()).max(q[1].subtract(q[2])).doubleValue();
-        }
-
-        @Override
-        Vector3d inside(Random r) {
-            Vector3d p = RobustSupport.add(c.base, 0.1 + 0.8 * r.nextDouble(), c.axis);
-            return RobustSupport.add(p, 0.9 * c.radius * r.nextDouble(), perpendicular(r, c.axis));
-        }
-
-        @Override
-        double size() {
-            return Math.max(c.radius, c.axis.length());
-        }
-    }
-
-    static final class ConeShape extends ClosedShapes {
-        final Cone c;
-
-        ConeShape(Vector3d base, Vector3d axis, double radius) {
-            super(make(base, axis, radius));
-            this.c = (Cone) surface;
-        }
-
-        private static Cone make(Vector3d base, Vector3d axis, double radius) {
-            Cone c = new Cone();
-            c.base.set(base);
-            c.axis.set(axis);
-            c.radius = radius;
-            return c;
-        }
-
-        /** max of the distance outside the side (measured perpendicular to it) and below the base. */
-        @Override
-        double residual(Vector3d p) {
-            BigDecimal[] q = cylindrical(p, c.base, c.axis);
+            if (!cone) {
+                return q[0].subtract(bd(c.radius)).max(q[1].negate()).max(q[1].subtract(q[2])).doubleValue();
+            }
             BigDecimal k = bd(c.radius).divide(q[2], MC);
             BigDecimal side = q[0].subtract(k.multiply(q[2].subtract(q[1])))
                     .divide(BigDecimal.ONE.add(k.pow(2)).sqrt(MC), MC);
             return side.max(q[1].negate()).doubleValue();
         }
 
+        /** A point at 10% to 90% (cone: 80%) of the height, within 0.9 of the radius there. */
         @Override
         Vector3d inside(Random r) {
-            double f = 0.1 + 0.7 * r.nextDouble();
+            double f = 0.1 + (cone ? 0.7 : 0.8) * r.nextDouble();
             Vector3d p = RobustSupport.add(c.base, f, c.axis);
-            return RobustSupport.add(p, 0.9 * c.radius * (1 - f) * r.nextDouble(), perpendicular(r, c.axis));
+            return RobustSupport.add(p, 0.9 * c.radius * (cone ? 1 - f : 1) * r.nextDouble(), perpendicular(r, c.axis));
         }
 
         @Override

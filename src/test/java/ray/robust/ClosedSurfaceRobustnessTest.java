@@ -30,34 +30,50 @@ class ClosedSurfaceRobustnessTest {
 
     private static final String[] NAMES = {"box", "cylinder", "cone", "torus"};
 
-    /** An origin inside the shape, near it or far away (never within 1e-6 sizes of the surface). */
-    private static Vector3d origin(Random r, ClosedShapes sh, Vector3d q) {
+    /** A random shape and a ray (tMin 0, unnormalised) aimed through its inside; {@code outside}: where the ray starts. */
+    private record Case(ClosedShapes sh, Ray ray, boolean outside) {
+    }
+
+    /**
+     * A shape of the kind at a scale of 1e-4..1e4 up to a million sizes from the origin, and a ray from
+     * inside it, near it or far away through a point well inside it; null when the origin falls within
+     * 1e-6 sizes of the surface (its side would be a matter of rounding).
+     */
+    private static Case randomCase(int kind, Random r) {
+        ClosedShapes sh = ClosedShapes.random(kind, r, logUniform(r, 1e-4, 1e4), 1e6);
+        Vector3d q = sh.inside(r);
+        Vector3d o;
         switch (r.nextInt(3)) {
             case 0:
-                return sh.inside(r);
+                o = sh.inside(r);
+                break;
             case 1:
-                return add(q, sh.size() * logUniform(r, 0.5, 3), unit(r));
+                o = add(q, sh.size() * logUniform(r, 0.5, 3), unit(r));
+                break;
             default:
-                return add(q, sh.size() * logUniform(r, 3, 1e4), unit(r));
+                o = add(q, sh.size() * logUniform(r, 3, 1e4), unit(r));
         }
+        double res = sh.residual(o);
+        if (Math.abs(res) < 1e-6 * sh.size() || sub(q, o).length() < 1e-6 * sh.size()) {
+            return null;
+        }
+        Ray ray = new Ray(o, unnormalised(r, sub(q, o)));
+        ray.tMin = 0;
+        return new Case(sh, ray, res > 0);
     }
 
     @ParameterizedTest(name = "{0}")
     @ValueSource(ints = {0, 1, 2, 3})
     void raysThroughTheInsideHitOnTheSurfaceAndCrossingsAlternate(int kind) {
         forEachSeed(0x9e11L + 1000 * kind, 3000, r -> {
-            double s = logUniform(r, 1e-4, 1e4);
-            ClosedShapes sh = ClosedShapes.random(kind, r, s, 1e6);
-            Vector3d q = sh.inside(r);
-            Vector3d o = origin(r, sh, q);
-            double res0 = sh.residual(o);
-            if (Math.abs(res0) < 1e-6 * sh.size() || sub(q, o).length() < 1e-6 * sh.size()) {
-                return;                                    // origin on the surface, or no direction
+            Case c = randomCase(kind, r);
+            if (c == null) {
+                return;
             }
-            Ray ray = new Ray(o, unnormalised(r, sub(q, o)));
-            ray.tMin = 0;
+            ClosedShapes sh = c.sh();
+            Ray ray = c.ray();
             String what = NAMES[kind] + " " + sh.surface + ", " + ray;
-            boolean outside = res0 > 0;
+            boolean outside = c.outside();
             int crossings = 0;
             double lastT = -1;
             while (true) {
@@ -94,15 +110,12 @@ class ClosedSurfaceRobustnessTest {
     void spawnedRaysDoNotRehitTheirOwnPoint(int kind) {
         boolean convex = kind != 3;
         forEachSeed(0x5be7L + 1000 * kind, 3000, r -> {
-            double s = logUniform(r, 1e-4, 1e4);
-            ClosedShapes sh = ClosedShapes.random(kind, r, s, 1e6);
-            Vector3d q = sh.inside(r);
-            Vector3d o = origin(r, sh, q);
-            if (Math.abs(sh.residual(o)) < 1e-6 * sh.size()) {
+            Case c = randomCase(kind, r);
+            if (c == null) {
                 return;
             }
-            Ray ray = new Ray(o, unnormalised(r, sub(q, o)));
-            ray.tMin = 0;
+            ClosedShapes sh = c.sh();
+            Ray ray = c.ray();
             IntersectionRecord rec = new IntersectionRecord();
             if (!sh.surface.intersects(ray, rec, null)) {
                 return;                                    // the first test checks this
@@ -141,14 +154,12 @@ class ClosedSurfaceRobustnessTest {
     @ValueSource(ints = {0, 1, 2, 3})
     void shapeCombinedWithItselfInCsgIsTheShape(int kind) {
         forEachSeed(0xc5e1fL + 1000 * kind, 1000, r -> {
-            ClosedShapes sh = ClosedShapes.random(kind, r, logUniform(r, 1e-4, 1e4), 1e6);
-            Vector3d q = sh.inside(r);
-            Vector3d o = origin(r, sh, q);
-            if (Math.abs(sh.residual(o)) < 1e-6 * sh.size()) {
+            Case c = randomCase(kind, r);
+            if (c == null) {
                 return;
             }
-            Ray ray = new Ray(o, unnormalised(r, sub(q, o)));
-            ray.tMin = 0;
+            ClosedShapes sh = c.sh();
+            Ray ray = c.ray();
             IntersectionRecord alone = new IntersectionRecord();
             assertTrue(sh.surface.intersects(ray, alone, null), "missed: " + sh.surface + ", " + ray);
             for (String op : new String[] {"union", "intersection"}) {
