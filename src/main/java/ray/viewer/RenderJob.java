@@ -32,7 +32,7 @@ public final class RenderJob {
     Image image;
     RayStats stats;
     String error;
-    String planSummary;
+    volatile String planSummary;
 
     RenderJob(Path file) {
         this.file = file;

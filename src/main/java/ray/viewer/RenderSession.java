@@ -1,13 +1,17 @@
 package ray.viewer;
 
 import java.nio.file.Path;
+import java.util.Queue;
+import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.Executor;
+import java.util.concurrent.atomic.AtomicBoolean;
 import ray.Scene;
 import ray.parse.Parser;
 import ray.parse.SceneFormatException;
 import ray.render.Image;
 import ray.render.ProgressListener;
 import ray.render.RenderCancelledException;
+import ray.render.RenderSettings;
 import ray.render.Renderer;
 import ray.render.WorkProgress;
 
@@ -129,15 +133,36 @@ public final class RenderSession {
         if (job.cancelled) {
             return;
         }
-        job.planSummary = PlanSummary.of(scene);
-        Renderer renderer = new Renderer(scene).threads(threads);
+        // a first look of one sample per pixel (then 4, 16, ...) where there are several; the final image is
+        // the same bit for bit, and with one sample per pixel the grid's own fast path stays
+        RenderSettings settings = new RenderSettings();
+        settings.progressive(settings.samples(scene) > 1 || !"grid".equals(settings.samplerName(scene)));
+        Renderer renderer = new Renderer(scene).threads(threads).settings(settings);
+        AtomicBoolean started = new AtomicBoolean(), drainPosted = new AtomicBoolean();
+        Queue<Object[]> finished = new ConcurrentLinkedQueue<>();
+        // Finished tiles are queued and handed over in batches, with at most one hand-over waiting on the
+        // session's thread: thousands of small tiles a second must not flood the event queue (a window
+        // that cannot paint or hear its Close).
+        Runnable drain = () -> {
+            drainPosted.set(false);
+            for (Object[] t; (t = finished.poll()) != null; ) {
+                int[] r = (int[]) t[1];
+                view.tile(job, (Image) t[0], r[0], r[1], r[2], r[3]);
+            }
+        };
         ProgressListener tiles = new ProgressListener() {
             @Override
             public void tileDone(Image image, int x0, int y0, int x1, int y1, int done, int total) {
-                post(job, () -> view.tile(job, image, x0, y0, x1, y1));
+                if (!started.getAndSet(true)) {
+                    job.planSummary = PlanSummary.of(scene);     // derived by the render's prepare(), before the first tile
+                }
+                finished.add(new Object[] {image, new int[] {x0, y0, x1, y1}});
+                if (!drainPosted.getAndSet(true)) {
+                    post(job, drain);
+                }
             }
         };
-        job.progress = new WorkProgress(scene.width, scene.height, tiles);
+        job.progress = WorkProgress.of(scene, settings, tiles);
         renderer.listener(job.progress);
         job.scene = scene;
         job.renderer = renderer;

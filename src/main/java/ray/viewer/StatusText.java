@@ -25,7 +25,8 @@ final class StatusText {
         var p = job.progress();
         long elapsed = p.elapsedNanos(nowNanos) + job.parseNanos();
         long left = p.remainingNanos(nowNanos);
-        return percent(p.fraction()) + " · " + seconds(elapsed) + " elapsed"
+        String pass = p.passes() > 1 ? "pass " + (p.pass() + 1) + " of " + p.passes() + " · " : "";
+        return pass + percent(p.fraction()) + " · " + seconds(elapsed) + " elapsed"
                 + (left < 0 ? "" : " · about " + seconds(left) + " left") + " · " + size(job.scene()) + plan(job);
     }
 

@@ -30,7 +30,7 @@ final class ViewerMenus {
         save = action("Save image as PNG...", key(KeyEvent.VK_S, MENU), f::saveImage);
         rerender = action("Re-render (read the file again)", key(KeyEvent.VK_R, MENU), f::rerender);
         stop = action("Stop", key(KeyEvent.VK_PERIOD, MENU), f::stop);
-        close = action("Close window", key(KeyEvent.VK_W, MENU), f::dispose);
+        close = action("Close window", key(KeyEvent.VK_W, MENU), f::close);
         quit = action("Quit", key(KeyEvent.VK_Q, MENU), ViewingFrame::quitAll);
         fit = action("Zoom to fit", key(KeyEvent.VK_0, MENU), () -> f.view.fitToView());
         actual = action("Actual size (1:1)", key(KeyEvent.VK_1, MENU), () -> f.view.actualSize());

@@ -1,9 +1,12 @@
 package ray.viewer;
 
+import java.awt.AWTError;
 import java.awt.BorderLayout;
 import java.awt.Color;
 import java.awt.Dimension;
 import java.awt.GraphicsConfiguration;
+import java.awt.GraphicsEnvironment;
+import java.awt.HeadlessException;
 import java.awt.Insets;
 import java.awt.Rectangle;
 import java.awt.Toolkit;
@@ -12,8 +15,11 @@ import java.awt.datatransfer.DataFlavor;
 import java.awt.event.WindowAdapter;
 import java.awt.event.WindowEvent;
 import java.io.File;
+import java.lang.reflect.InvocationTargetException;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
 import javax.swing.BorderFactory;
 import javax.swing.JFrame;
 import javax.swing.JLabel;
@@ -40,7 +46,14 @@ public final class ViewingFrame extends JFrame {
     private final JLabel status = new JLabel("Open a scene file: File > Open (Ctrl+O), or drop one here.");
     private final JTextArea error = new JTextArea();
     private final transient RenderSession session;
-    private final transient RecentFiles recent = RecentFiles.user();
+    /** The recent files, used on {@link #BACKGROUND} only (created there: the preferences' first use is slow). */
+    private transient RecentFiles recent;
+    /** Where the preferences are written: off the event thread (the first write loads an XML writer). */
+    private static final ExecutorService BACKGROUND = Executors.newSingleThreadExecutor(r -> {
+        Thread t = new Thread(r, "viewer-prefs");
+        t.setDaemon(true);
+        return t;
+    });
     private final transient FileWatch watch = new FileWatch();
     private final transient ViewerMenus menus;
     private final Timer ticker;
@@ -53,7 +66,7 @@ public final class ViewingFrame extends JFrame {
         menus = new ViewerMenus(this);
         setJMenuBar(menus.bar());
         menus.bindExtraKeys(getRootPane());
-        menus.recentFiles(recent.list());
+        updateRecent(null);
         error.setEditable(false);
         error.setLineWrap(true);
         error.setWrapStyleWord(true);
@@ -80,16 +93,41 @@ public final class ViewingFrame extends JFrame {
         updateActions();
     }
 
-    /** Opens a viewer window (on the Swing thread), rendering {@code scene} if it is not null. */
-    public static void open(Path scene) {
-        SwingUtilities.invokeLater(() -> {
-            LookAndFeels.install();
-            ViewingFrame f = new ViewingFrame();
-            f.setVisible(true);
-            if (scene != null) {
-                f.load(scene);
+    /**
+     * Opens a viewer window, rendering {@code scene} if it is not null, and returns once it is shown
+     * (the render goes on in the background). Throws {@link HeadlessException} with a one-line reason
+     * when there is no display to open it on: none configured, or one that cannot be reached.
+     */
+    public static void open(Path scene) throws HeadlessException {
+        if (GraphicsEnvironment.isHeadless()) {
+            throw new HeadlessException("no display");
+        }
+        try {
+            GraphicsEnvironment.getLocalGraphicsEnvironment().getScreenDevices();   // connects to the display
+            SwingUtilities.invokeAndWait(() -> {
+                LookAndFeels.install();
+                ViewingFrame f = new ViewingFrame();
+                f.setVisible(true);
+                if (scene != null) {
+                    f.load(scene);
+                }
+            });
+        } catch (InvocationTargetException e) {
+            Throwable cause = e.getCause();
+            if (cause instanceof HeadlessException || cause instanceof AWTError || cause instanceof InternalError) {
+                throw noDisplay(cause);
             }
-        });
+            throw cause instanceof RuntimeException r ? r : new IllegalStateException(cause);
+        } catch (AWTError | InternalError e) {
+            throw noDisplay(e);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    private static HeadlessException noDisplay(Throwable e) {
+        String why = e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
+        return new HeadlessException(Failures.oneLine("cannot open the display (" + why + ")"));
     }
 
     /** Closes every viewer window; the process then ends. */
@@ -108,8 +146,27 @@ public final class ViewingFrame extends JFrame {
             watch.watch(file);
         }
         session.open(file);
-        recent.add(file);
-        menus.recentFiles(recent.list());
+        updateRecent(file);
+    }
+
+    /** Puts {@code file} (if not null) first in the recent files and rebuilds the menu; the store's work in the background. */
+    private void updateRecent(Path file) {
+        BACKGROUND.execute(() -> {
+            if (recent == null) {
+                recent = RecentFiles.user();
+            }
+            if (file != null) {
+                recent.add(file);
+            }
+            List<Path> l = recent.list();
+            SwingUtilities.invokeLater(() -> menus.recentFiles(l));
+        });
+    }
+
+    /** Close window: the render stops first, so closing does not wait for busy processors. */
+    void close() {
+        session.stop();
+        dispose();
     }
 
     void chooseScene() {
@@ -229,7 +286,7 @@ public final class ViewingFrame extends JFrame {
                     setTitle(TITLE + " - " + back.file().getFileName());
                 }
             } else if (job.state() == RenderJob.State.DONE) {
-                view.repaint();
+                view.show(job.image());            // exactly the finished image, whatever the tiles showed
                 for (String w : job.warnings()) {
                     System.err.println(w);
                 }
@@ -267,6 +324,11 @@ public final class ViewingFrame extends JFrame {
 
     /** Closing the window stops its work at once; the last window's closing ends the process. */
     private final class Closing extends WindowAdapter {
+        @Override
+        public void windowClosing(WindowEvent e) {
+            session.stop();
+        }
+
         @Override
         public void windowOpened(WindowEvent e) {
             openWindows++;

@@ -122,11 +122,14 @@ class RenderSessionTest {
         assertEquals(RenderJob.State.DONE, job.state(), events.log::toString);
         Image expected = new Renderer(Parser.parse(scene)).render();
         assertArrayEquals(expected.rgb, job.image().rgb);
-        assertEquals(40 * 30, events.pixels, "every pixel arrives in exactly one tile");
+        assertEquals(2, job.progress().passes(), "2x2 samples: a first look of 1 per pixel, then the other 3");
+        assertEquals(40 * 30 * 2, events.pixels, "every pixel arrives in exactly one tile per pass");
         assertEquals(1.0, job.progress().fraction());
         assertSame(job, session.shown());
         assertTrue(session.canSave());
         assertEquals(List.of("parsing good.txt", "rendering good.txt", "ended good.txt DONE"), events.log);
+        // 4,800 camera rays, each hitting the sphere or not, and at most one shadow ray per camera ray
+        assertEquals("plan: direct light; at most 9,600 rays; 1 skip", job.planSummary());
         assertTrue(job.stats().get(ray.RayKind.CAMERA) == 40 * 30 * 4, "camera rays: " + job.stats());
     }
 
@@ -207,7 +210,7 @@ class RenderSessionTest {
         assertEquals(RenderJob.State.STOPPED, slow.state());
         runUntilFinished(good);
         assertEquals(RenderJob.State.DONE, good.state());
-        assertEquals(40 * 30, events.pixels, "no tile of the stopped scene reached the new image");
+        assertEquals(40 * 30 * 2, events.pixels, "no tile of the stopped scene reached the new image");
         assertSame(good, session.shown());
     }
 
