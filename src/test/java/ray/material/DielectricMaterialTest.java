@@ -27,7 +27,11 @@ class DielectricMaterialTest {
     static final double[] ABSORB = {0, 0.1, 0.5};
 
     static Scene slab(String fresnel, int maxDepth, double n) throws SceneFormatException {
-        return Parser.parse("""
+        return Parser.parse(slabText(fresnel, maxDepth, n), "slab.txt", new ArrayList<>());
+    }
+
+    static String slabText(String fresnel, int maxDepth, double n) {
+        return """
                 Width 1
                 Height 1
                 MaxDepth %d
@@ -55,7 +59,7 @@ class DielectricMaterialTest {
                 Vector3d v1 [50 -50 -5]
                 Vector3d v2 [0 50 -5]
                 ref material wall
-                """.formatted(maxDepth, Double.toString(n), fresnel), "slab.txt", new ArrayList<>());
+                """.formatted(maxDepth, Double.toString(n), fresnel);
     }
 
     static Vector3d centreRay(Scene s) {
@@ -100,6 +104,65 @@ class DielectricMaterialTest {
         Vector3d deep = centreRay(slab("exact", 60, N));
         double e = Math.exp(-2 * ABSORB[2]);
         assertEquals((1 - R0) * (1 - R0) * e / (1 - R0 * R0 * e * e) * A[2], deep.z, 1e-12);
+    }
+
+    /**
+     * A real slab: a glass Box 0.8 thick seen head-on, over the same ambient wall. With MaxDepth 2 the
+     * light crossing it is (1 - R0)^2 exp(-0.8 a); with more depth the internal round trips add
+     * (1 - R0)^2 R0^(2k) exp(-0.8 a (1 + 2k)). Checks the Box's inside (frontFace) as glass sees it.
+     */
+    @Test
+    void boxSlabTransmitsTheSameSeries() throws Exception {
+        for (int maxDepth : new int[] {2, 5, 40}) {
+            String text = slabText("exact", maxDepth, N).replace("""
+                    Surface Sphere
+                    Vector3d center [0 0 0]
+                    double radius 1
+                    ref material glass
+                    """, """
+                    Surface Box
+                    Vector3d minPoint [-3 -3 -0.4]
+                    Vector3d maxPoint [3 3 0.4]
+                    ref material glass
+                    """);
+            Vector3d c = centreRay(Parser.parse(text, "box.txt", new ArrayList<>()));
+            double[] got = {c.x, c.y, c.z};
+            for (int k = 0; k < 3; k++) {
+                double expected = 0;
+                for (int trip = 0; 2 + 2 * trip <= maxDepth; trip++) {
+                    expected += (1 - R0) * (1 - R0) * Math.pow(R0, 2 * trip) * Math.exp(-0.8 * ABSORB[k] * (1 + 2 * trip)) * A[k];
+                }
+                assertEquals(expected, got[k], 1e-12, "MaxDepth " + maxDepth + " channel " + k);
+            }
+        }
+    }
+
+    /**
+     * Index-1 glass with exact Fresnel lets a ray straight through, attenuated by exp(-a L) with L the
+     * length of the ray inside: which needs each closed surface to report its inside (frontFace false)
+     * on the way out. Along the x axis: a sphere of radius 1 (L = 2), a box 1.5 wide, a cylinder and a
+     * cone along their axes (L = height 1.2), a torus through both sides of its tube (L = 2 x 0.5).
+     */
+    @Test
+    void chordsThroughClosedSurfacesAreAttenuatedByTheirLengthInside() throws Exception {
+        String[][] shapes = {
+                {"Surface Sphere\nVector3d center [0 0 0]\ndouble radius 1", "2"},
+                {"Surface Box\nVector3d minPoint [-0.75 -1 -1]\nVector3d maxPoint [0.75 1 1]", "1.5"},
+                {"Surface Cylinder\nVector3d base [-0.6 0 0]\nVector3d axis [1.2 0 0]\ndouble radius 0.5", "1.2"},
+                {"Surface Cone\nVector3d base [-0.6 0 0]\nVector3d axis [1.2 0 0]\ndouble radius 0.5", "1.2"},
+                {"Surface Torus\nVector3d center [0 0 0]\nVector3d axis [0 0 1]\ndouble majorRadius 1\n"
+                        + "double minorRadius 0.25", "1"},
+        };
+        for (String[] shape : shapes) {
+            Scene s = Parser.parse("Width 1\nHeight 1\nBGColor [1 1 1]\n\nCamera Camera\n\n"
+                    + "Material Dielectric glass\ndouble refractiveIndex 1\nVector3d attenuation [0 0.1 0.5]\n"
+                    + "String fresnel exact\n\n" + shape[0] + "\nref material glass\n", "chord.txt", new ArrayList<>());
+            Vector3d c = s.trace(new Ray(new Vector3d(-5, 0, 0), new Vector3d(1, 0, 0)));
+            double length = Double.parseDouble(shape[1]);
+            assertEquals(1, c.x, 1e-12, shape[0]);
+            assertEquals(Math.exp(-0.1 * length), c.y, 1e-12, shape[0]);
+            assertEquals(Math.exp(-0.5 * length), c.z, 1e-12, shape[0]);
+        }
     }
 
     /**
