@@ -170,6 +170,28 @@ final class SampledRender {
         }
     }
 
+    /** A render thread's work on a film pass: each pixel of a tile, then the tile's means into the image. */
+    private abstract class FilmWorker implements Renderer.TileWorker {
+        final TraceContext ctx;
+        final Vector3d c = new Vector3d();
+
+        FilmWorker(TraceContext ctx) {
+            this.ctx = ctx;
+        }
+
+        abstract void pixel(int x, int y);
+
+        @Override
+        public void tile(int x0, int y0, int x1, int y1) {
+            for (int y = y0; y < y1; y++) {
+                for (int x = x0; x < x1; x++) {
+                    pixel(x, y);
+                }
+            }
+            film.writeTo(image, x0, y0, x1, y1);
+        }
+    }
+
     /** Samples [from, to) of every pixel, added to the film in index order. */
     private final class Samples implements Renderer.TileWork {
         private final int from, to;
@@ -181,19 +203,13 @@ final class SampledRender {
 
         @Override
         public Renderer.TileWorker worker(TraceContext ctx) {
-            Vector3d c = new Vector3d();
-            return new Renderer.TileWorker() {
+            return new FilmWorker(ctx) {
                 @Override
-                public void tile(int x0, int y0, int x1, int y1) {
-                    for (int y = y0; y < y1; y++) {
-                        for (int x = x0; x < x1; x++) {
-                            for (int s = from; s < to; s++) {
-                                trace(ctx, x, y, s, c);
-                                film.add(x, y, c.x, c.y, c.z);
-                            }
-                        }
+                void pixel(int x, int y) {
+                    for (int s = from; s < to; s++) {
+                        trace(ctx, x, y, s, c);
+                        film.add(x, y, c.x, c.y, c.z);
                     }
-                    film.writeTo(image, x0, y0, x1, y1);
                 }
             };
         }
@@ -211,24 +227,18 @@ final class SampledRender {
 
         @Override
         public Renderer.TileWorker worker(TraceContext ctx) {
-            Vector3d c = new Vector3d();
             int b0 = a.firstBatch();
-            return new Renderer.TileWorker() {
+            return new FilmWorker(ctx) {
                 @Override
-                public void tile(int x0, int y0, int x1, int y1) {
-                    for (int y = y0; y < y1; y++) {
-                        for (int x = x0; x < x1; x++) {
-                            int base = 3 * b0 * (y * scene.width + x);
-                            for (int k = 0; k < b0; k++) {
-                                trace(ctx, x, y, a.order(k), c);
-                                first[base + 3 * k] = c.x;
-                                first[base + 3 * k + 1] = c.y;
-                                first[base + 3 * k + 2] = c.z;
-                                film.add(x, y, c.x, c.y, c.z);
-                            }
-                        }
+                void pixel(int x, int y) {
+                    int base = 3 * b0 * (y * scene.width + x);
+                    for (int k = 0; k < b0; k++) {
+                        trace(ctx, x, y, a.order(k), c);
+                        first[base + 3 * k] = c.x;
+                        first[base + 3 * k + 1] = c.y;
+                        first[base + 3 * k + 2] = c.z;
+                        film.add(x, y, c.x, c.y, c.z);
                     }
-                    film.writeTo(image, x0, y0, x1, y1);
                 }
             };
         }
@@ -248,17 +258,11 @@ final class SampledRender {
 
         @Override
         public Renderer.TileWorker worker(TraceContext ctx) {
-            AdaptivePixel pixel = new AdaptivePixel(a, target, SampledRender.this, ctx);
-            int w = scene.width, h = scene.height;
-            return new Renderer.TileWorker() {
+            AdaptivePixel adaptive = new AdaptivePixel(a, target, SampledRender.this, ctx);
+            return new FilmWorker(ctx) {
                 @Override
-                public void tile(int x0, int y0, int x1, int y1) {
-                    for (int y = y0; y < y1; y++) {
-                        for (int x = x0; x < x1; x++) {
-                            pixel.render(x, y, film, first, nudged[y * w + x]);
-                        }
-                    }
-                    film.writeTo(image, x0, y0, x1, y1);
+                void pixel(int x, int y) {
+                    adaptive.render(x, y, film, first, nudged[y * scene.width + x]);
                 }
             };
         }
