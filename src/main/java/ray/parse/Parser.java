@@ -62,6 +62,8 @@ public final class Parser {
     private int firstDegenerateLine;
 
     private int line;
+    /** Lines the fast path read (for the test that it is taken: ParserFastPathTest). */
+    private int fastLines;
 
     private Parser(String file, ClassLoader loader) {
         this.file = file;
@@ -105,6 +107,17 @@ public final class Parser {
         }
     }
 
+    /** For tests: how many lines of a scene file's bytes the fast path read (the rest took the general path). */
+    static int fastLineCount(byte[] bytes, String name) throws SceneFormatException {
+        Parser p = new Parser(name, Parser.class.getClassLoader());
+        try {
+            p.run(Lines.of(new java.io.ByteArrayInputStream(bytes), name), new ArrayList<>());
+        } catch (IOException e) {
+            throw new AssertionError(e);     // a byte array cannot fail to read
+        }
+        return p.fastLines;
+    }
+
     /** Parses scene text; {@code name} is used in messages. */
     public static Scene parse(String text, String name, List<String> warnings) throws SceneFormatException {
         return parse(text, name, warnings, Parser.class.getClassLoader());
@@ -125,6 +138,7 @@ public final class Parser {
             line = lines.line();
             if (lines.ascii() && fastLine(lines.bytes(), lines.length())) {
                 any |= lines.length() > 0;
+                fastLines++;
                 continue;
             }
             String raw = lines.text();
