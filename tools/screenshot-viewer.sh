@@ -14,9 +14,9 @@ launcher=build/install/raytracer/bin/raytracer
 tmp=$(mktemp -d)
 xvfb=""; viewer=""
 cleanup() {
-    [ -n "$viewer" ] && kill "$viewer" 2>/dev/null
-    [ -n "$xvfb" ] && kill "$xvfb" 2>/dev/null
-    rm -rf "$tmp"
+    if [ -n "$viewer" ]; then kill "$viewer" 2>/dev/null; wait "$viewer" 2>/dev/null || true; fi
+    if [ -n "$xvfb" ]; then kill "$xvfb" 2>/dev/null; wait "$xvfb" 2>/dev/null || true; fi
+    rm -rf "$tmp" || true
 }
 trap cleanup EXIT
 

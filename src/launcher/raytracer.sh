@@ -44,5 +44,10 @@ if [ -f "$APP_HOME/lib/raytracer.jsa" ] && [ -z "$RAYTRACER_NO_CDS" ]; then
     DEFAULT_JVM_OPTS="$DEFAULT_JVM_OPTS \"-XX:SharedArchiveFile=$APP_HOME/lib/raytracer.jsa\" \"-Xlog:cds*=off\""
 fi
 
-eval "set -- $DEFAULT_JVM_OPTS $JAVA_OPTS $RAYTRACER_OPTS -classpath \"\$CLASSPATH\" @MAIN@ \"\$@\""
+# Whether stderr and stdout are terminals (the progress bar goes to stderr only when it is one; Java's
+# System.console() asks about stdin and stdout together). `[` is a shell builtin: no process start.
+if [ -t 2 ]; then tty2=true; else tty2=false; fi
+if [ -t 1 ]; then tty1=true; else tty1=false; fi
+
+eval "set -- $DEFAULT_JVM_OPTS $JAVA_OPTS $RAYTRACER_OPTS -Draytracer.stderrTty=$tty2 -Draytracer.stdoutTty=$tty1 -classpath \"\$CLASSPATH\" @MAIN@ \"\$@\""
 exec "$JAVACMD" "$@"

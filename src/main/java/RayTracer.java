@@ -5,7 +5,7 @@
  */
 public class RayTracer {
     public static void main(String[] args) {
-        int status = ray.app.Main.run(args);
+        int status = ray.app.Main.runProcess(args);
         if (status != ray.app.Main.VIEWER_OPEN) {
             System.exit(status);
         }

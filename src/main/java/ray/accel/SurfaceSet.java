@@ -1,7 +1,6 @@
 package ray.accel;
 
 import java.util.List;
-import javax.vecmath.Vector3d;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.surface.Surface;
@@ -88,23 +87,9 @@ final class SurfaceSet extends PrimitiveSet {
         return hit;
     }
 
-    /**
-     * Calls a surface's own intersects. Framework code may point the record's vectors at its own
-     * objects ({@code record.normal = normal}); the record gets its own vectors back, holding the values,
-     * so later writes into the record (the next hit's fill) cannot change the surface's fields.
-     */
+    /** Calls a surface's own intersects, the record keeping its own vectors ({@link Surface#intersectInto}). */
     private static boolean intersects(Surface s, Ray ray, IntersectionRecord rec, RayQuery q) {
-        Vector3d location = rec.location, normal = rec.normal;
-        boolean hit = s.intersects(ray, rec, q.scene);
-        if (rec.location != location) {
-            location.set(rec.location);
-            rec.location = location;
-        }
-        if (rec.normal != normal) {
-            normal.set(rec.normal);
-            rec.normal = normal;
-        }
-        return hit;
+        return Surface.intersectInto(s, ray, rec, q.scene);
     }
 
     /**

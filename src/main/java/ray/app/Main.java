@@ -26,7 +26,9 @@ import ray.render.Renderer;
 @Command(name = "raytracer", mixinStandardHelpOptions = true, versionProvider = Main.Version.class,
         sortOptions = false,
         description = {"Renders each scene file to a PNG of the same name beside it (a.txt -> a.png).",
-                "With no scene files, opens the viewer."},
+                "With no scene files, opens the viewer.",
+                "A scene named '-' is read from standard input and its PNG goes to standard output (or -o).",
+                "'--' ends the options (for a scene whose name starts with '-'); '@name' is a scene like any other."},
         exitCodeListHeading = "%nExit status:%n",
         exitCodeList = {"0:every scene rendered", "1:a scene could not be read or rendered", "2:bad command line"})
 public final class Main implements Callable<Integer> {
@@ -34,7 +36,11 @@ public final class Main implements Callable<Integer> {
     @Parameters(paramLabel = "SCENE", description = "scene files (.txt) to render")
     List<Path> scenes = new ArrayList<>();
 
-    @Option(names = {"-o", "--output"}, paramLabel = "PNG", description = "where to write the image (one scene only)")
+    /** --output as typed: Path drops a trailing '/', which says "a folder". */
+    @Option(names = {"-o", "--output"}, paramLabel = "PNG", description = "where to write the image: a file (one scene), an existing folder (each scene's PNG in it) "
+            + "or '-' (standard output)")
+    String outputArg;
+    /** --output as a path (set from outputArg when the command runs). */
     Path output;
 
     @Option(names = {"-j", "--threads"}, paramLabel = "N", description = "render threads (default: all cores, ${DEFAULT-VALUE})")
@@ -79,6 +85,7 @@ public final class Main implements Callable<Integer> {
 
     private PrintStream out = System.out;
     private PrintStream err = System.err;
+    private java.io.InputStream in = System.in;
 
     /** Runs the command line and returns the exit status (never calls System.exit). */
     public static int run(String... args) {
@@ -86,19 +93,43 @@ public final class Main implements Callable<Integer> {
     }
 
     public static int run(PrintStream out, PrintStream err, String... args) {
+        return run(System.in, out, err, args);
+    }
+
+    /** As {@link #run(PrintStream, PrintStream, String...)}, reading the scene '-' from {@code in}. */
+    static int run(java.io.InputStream in, PrintStream out, PrintStream err, String... args) {
         Main simple = simpleCommandLine(args);
         if (simple != null) {
+            simple.in = in;
             simple.out = out;
             simple.err = err;
             return simple.call();
         }
         Main main = new Main();
+        main.in = in;
         main.out = out;
         main.err = err;
         CommandLine cl = new CommandLine(main);
         cl.setOut(new java.io.PrintWriter(out, true));
         cl.setErr(new java.io.PrintWriter(err, true));
+        cl.setExpandAtFiles(false);            // a scene may be named @x.txt; picocli would read it as an argument file
+        cl.setParameterExceptionHandler(new CommandLine.IParameterExceptionHandler() {
+            @Override
+            public int handleParseException(CommandLine.ParameterException e, String[] a) {
+                err.println(oneLine("raytracer: " + e.getMessage() + " (see raytracer --help)"));
+                return 2;
+            }
+        });
         return cl.execute(args);
+    }
+
+    /**
+     * The {@code raytracer} process: {@link #run} with the exit guard installed, so a user's class that
+     * calls System.exit while its scene renders cannot end the run with a success status.
+     */
+    public static int runProcess(String... args) {
+        ExitGuard.install(System.err);
+        return run(args);
     }
 
     /**
@@ -106,7 +137,7 @@ public final class Main implements Callable<Integer> {
      * (it reflects over the annotations of the whole command): scene files, {@code -o/--output PNG},
      * {@code -j/--threads N}, {@code -q/--quiet} and {@code --stats}, each option at most once, values
      * as separate words. Returns null for anything else (no arguments, help, version, other options,
-     * {@code @files}, repeated options, unusual values), which picocli then reads and reports exactly
+     * repeated options, unusual values), which picocli then reads and reports exactly
      * as before.
      */
     static Main simpleCommandLine(String[] args) {
@@ -135,7 +166,8 @@ public final class Main implements Callable<Integer> {
                         if (m.output != null || i + 1 == args.length || !plainWord(args[i + 1])) {
                             return null;
                         }
-                        m.output = Path.of(args[++i]);
+                        m.outputArg = args[++i];
+                        m.output = Path.of(m.outputArg);
                     }
                     case "-j", "--threads" -> {
                         if (threadsSet || i + 1 == args.length || !smallNumber(args[i + 1])) {
@@ -171,13 +203,21 @@ public final class Main implements Callable<Integer> {
         return true;
     }
 
-    /** Not an option, an {@code @file} or empty: a word picocli takes as a plain value. */
+    /** Not an option, {@code -} or empty: a word picocli takes as a plain value ({@code @x.txt} too: no argument files). */
     private static boolean plainWord(String a) {
-        return !a.isEmpty() && a.charAt(0) != '-' && a.charAt(0) != '@';
+        return !a.isEmpty() && a.charAt(0) != '-';
     }
 
     @Override
     public Integer call() {
+        if (outputArg != null) {
+            try {
+                output = Path.of(outputArg);
+            } catch (java.nio.file.InvalidPathException e) {
+                err.println(oneLine("raytracer: --output " + outputArg + " is not a file name (" + e.getReason() + ")"));
+                return 2;
+            }
+        }
         if (threads < 1) {
             err.println("raytracer: --threads must be at least 1");
             return 2;
@@ -204,115 +244,57 @@ public final class Main implements Callable<Integer> {
             return ray.study.Study.run(scenes, quick, reportDir != null ? reportDir : Path.of("build", "reports", "accuracy"),
                     threads, out, err, !this.quiet && System.console() != null);
         }
-        if (output != null && scenes.size() != 1) {
-            err.println("raytracer: --output needs exactly one scene file");
-            return 2;
-        }
         if (scenes.isEmpty() || view) {
-            if (GraphicsEnvironment.isHeadless()) {
-                err.println("raytracer: no display for the viewer; give scene files to render (see --help)");
-                return 2;
-            }
-            ray.viewer.ViewingFrame.open(scenes.isEmpty() ? null : scenes.get(0));
-            return VIEWER_OPEN;
+            return openViewer();
+        }
+        Outputs outputs;
+        try {
+            outputs = Outputs.of(scenes, outputArg, Terminal.stdout());
+        } catch (Outputs.UsageException e) {
+            err.println("raytracer: " + e.getMessage());
+            return 2;
         }
         int failed = 0;
         for (Path scene : scenes) {
-            if (!renderOne(scene, output != null ? output : pngBeside(scene))) {
+            if (!new SceneJob(this, scene, outputs).run()) {
                 failed++;
             }
         }
         return failed == 0 ? 0 : 1;
     }
 
-    /** a.txt -> a.png in the same directory (a name without .txt gets .png appended). */
-    static Path pngBeside(Path scene) {
-        String name = scene.getFileName().toString();
-        String base = name.endsWith(".txt") ? name.substring(0, name.length() - 4) : name;
-        return scene.resolveSibling(base + ".png");
+    /**
+     * The viewer, or one line and status 2 when there is no display to show it on: none set, or one
+     * that does not answer (a stale or unreachable DISPLAY makes AWT throw instead of saying headless).
+     */
+    private int openViewer() {
+        String noDisplay = "raytracer: no display for the viewer; give scene files to render (see --help)";
+        if (GraphicsEnvironment.isHeadless()) {
+            err.println(noDisplay);
+            return 2;
+        }
+        try {
+            GraphicsEnvironment.getLocalGraphicsEnvironment().getScreenDevices();   // connects to the display now
+        } catch (java.awt.AWTError | java.awt.HeadlessException | InternalError | UnsatisfiedLinkError e) {
+            String display = System.getenv("DISPLAY");
+            err.println(oneLine(noDisplay.replace("viewer;", "viewer (" + (display == null ? "none found"
+                    : "DISPLAY=" + display + " does not answer") + ");")));
+            return 2;
+        }
+        ray.viewer.ViewingFrame.open(scenes.isEmpty() ? null : scenes.get(0));
+        return VIEWER_OPEN;
     }
 
-    private boolean renderOne(Path scenePath, Path png) {
-        if (png.toAbsolutePath().normalize().equals(scenePath.toAbsolutePath().normalize())) {
-            err.println(scenePath + ": the output would overwrite the scene file itself");
-            return false;
-        }
-        long t0 = System.nanoTime();
-        Scene scene;
-        List<String> warnings = new ArrayList<>();
-        try {
-            scene = Parser.parse(scenePath, warnings);
-        } catch (SceneFormatException e) {
-            err.println(e.getMessage());
-            return false;
-        } catch (RuntimeException e) {            // a parser bug: still one line, no stack trace
-            err.println(oneLine(scenePath + ": internal error while reading the scene: " + describe(e) + " (please report it)"));
-            return false;
-        }
-        for (String w : warnings) {
-            err.println(w);
-        }
-        sampling.applyTo(scene);
-        scene.planCutFaint(cutFaint);
-        if (!ray.plan.CostGate.check(scenePath.toString(), scene, allowLong, threads, quiet, err)) {
-            return false;
-        }
-        long t1 = System.nanoTime();
-        Renderer renderer = new Renderer(scene).threads(threads);
-        ProgressLine progress = !quiet && err == System.err && System.console() != null
-                ? new ProgressLine(err, scenePath.toString()) : null;
-        if (progress != null) {
-            renderer.listener(progress);
-        }
-        Image image;
-        try {
-            image = renderer.render();
-        } catch (OutOfMemoryError e) {
-            err.println(scenePath + ": out of memory while rendering (raise the heap, e.g. JAVA_OPTS=-Xmx16g)");
-            return false;
-        } catch (RuntimeException | StackOverflowError e) {   // e.g. a user's own material failing
-            StackTraceElement[] where = e.getStackTrace();      // point at the failing method
-            err.println(oneLine(scenePath + ": rendering failed: " + describe(e) + (where.length == 0 ? "" : " at " + where[0])));
-            return false;
-        } finally {
-            if (progress != null) {
-                progress.clear();
-            }
-        }
-        long t2 = System.nanoTime();
-        try {
-            PngWriter.write(image, png);
-        } catch (java.io.IOException | RuntimeException e) {
-            err.println(oneLine(png + ": cannot write the image (" + (e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage()) + ")"));
-            return false;
-        }
-        long t3 = System.nanoTime();
-        // plain concatenation, not printf: java.util.Formatter's first use loads locale data (~20 ms)
-        if (!quiet && !json) {   // with --json, stdout holds JSON Lines only
-            out.println(scenePath + " -> " + png + " (" + scene.width + "x" + scene.height + ", " + scene.samplesPerPixel
-                    + "x" + scene.samplesPerPixel + " AA, " + fixed(t3 - t0, 2) + " s)");
-            SamplingOptions.report(out, renderer.summary());
-        }
-        if (stats && json) {
-            out.println(StatsJson.line(scenePath, png, scene, renderer.stats(), new long[] {t0, t1, t2, t3}));
-        } else if (stats) {
-            long build = scene.accelerator() instanceof Bvh b ? b.buildNanos() : 0;
-            String bvh = scene.accelerator() instanceof Bvh b && b.primitiveCount() > 0
-                    ? "; BVH " + fixed(Math.round(1e9 * b.memoryBytes() / b.primitiveCount()), 1) + " bytes/primitive" : "";
-            long peak = peakRssBytes();
-            out.println("  parse " + fixed(t1 - t0, 3) + " s, build " + fixed(build, 3) + " s, render " + fixed(t2 - t1 - build, 3)
-                    + " s, write " + fixed(t3 - t2, 3) + " s; " + renderer.stats()
-                    + (peak > 0 ? "; peak RSS " + (peak >> 20) + " MiB" : "") + bvh + "; cpu " + fixed(processCpuNanos(), 3) + " s");
-        }
-        if (renderer.stats().invalidSamples > 0) {
-            err.println(scenePath + ": warning: " + renderer.stats().invalidSamples + " samples were NaN or infinite and were left black");
-        }
-        return true;
+    PrintStream out() {
+        return out;
     }
 
-    private static String describe(Throwable e) {
-        return (e instanceof IllegalArgumentException || e instanceof IllegalStateException) && e.getMessage() != null
-                ? e.getMessage() : e.getClass().getSimpleName() + (e.getMessage() == null ? "" : " (" + e.getMessage() + ")");
+    PrintStream err() {
+        return err;
+    }
+
+    java.io.InputStream in() {
+        return in;
     }
 
     /** Keeps an error report on one line whatever an exception's message holds. */
@@ -365,8 +347,23 @@ public final class Main implements Callable<Integer> {
     static final class Version implements CommandLine.IVersionProvider {
         @Override
         public String[] getVersion() {
+            return new String[] {"raytracer " + version() + " (Java " + System.getProperty("java.version") + ")"};
+        }
+
+        /** The build's version: ray/app/version.txt (written by the build), else the jar's manifest. */
+        static String version() {
+            try (java.io.InputStream in = Main.class.getResourceAsStream("version.txt")) {
+                if (in != null) {
+                    String v = new String(in.readAllBytes(), java.nio.charset.StandardCharsets.UTF_8).trim();
+                    if (!v.isEmpty()) {
+                        return v;
+                    }
+                }
+            } catch (java.io.IOException e) {
+                // fall through to the manifest
+            }
             String v = Main.class.getPackage().getImplementationVersion();
-            return new String[] {"raytracer " + (v == null ? "(development build)" : v)};
+            return v == null ? "(development build: classes not built by Gradle)" : v;
         }
     }
 }

@@ -5,43 +5,135 @@ import ray.render.Image;
 import ray.render.ProgressListener;
 
 /**
- * A one-line progress report on a terminal ({@code scene.txt: 42%}), redrawn at most ten times a
- * second from whichever render thread finishes a tile, and erased when the render ends. Not used when
- * the output is not a terminal, so logs and pipes stay clean.
+ * The progress bar on a terminal's stderr:
+ * {@code scene.txt  42% [========>           ] 3.1 s, about 4.2 s left}. The share is of the work, not
+ * of the tiles: pixels done (weighted by each tile's area) out of all the image's pixels, over all of a
+ * progressive render's passes; as the renderer hands tiles out spread over the image, pixels done are
+ * an unbiased sample of the work. The time left is the elapsed time scaled by the share still to do,
+ * shown once there is a measure to scale (2% or a second). A timer redraws the line four times a second
+ * even when no tile finishes, so a slow tile still shows the clock running; the line is erased when the
+ * render ends, fails or is interrupted (Ctrl+C, through {@link ExitGuard}). Used only when stderr is a
+ * terminal ({@link Terminal}), never with {@code --quiet}.
  */
 final class ProgressLine implements ProgressListener {
 
-    private static final long INTERVAL_NANOS = 100_000_000L;
+    private static final long REDRAW_NANOS = 250_000_000L;
+    private static final int BAR = 20;
+    /** Columns the line may use: a terminal is at least 80 wide, and the last column would wrap on some. */
+    static final int WIDTH = 79;
 
     private final PrintStream err;
     private final String label;
     private final long start = System.nanoTime();
-    private long lastDraw = start;
-    private int width;
+    private final long pixels;
+    private long pixelsDone;
+    private int pass;
+    private int passes = 1;
+    private int drawn;
+    private boolean closed;
+    private final Thread timer;
 
-    ProgressLine(PrintStream err, String label) {
+    ProgressLine(PrintStream err, String label, long pixels) {
         this.err = err;
         this.label = label;
+        this.pixels = Math.max(1, pixels);
+        ProgressLine self = this;
+        timer = new Thread("progress") {      // (not a lambda: linking one costs start-up time)
+            @Override
+            public void run() {
+                try {
+                    do {
+                        Thread.sleep(REDRAW_NANOS / 1_000_000L);    // a render over in a blink draws nothing
+                    } while (self.redraw());
+                } catch (InterruptedException e) {
+                    // cleared
+                }
+            }
+        };
+        timer.setDaemon(true);
+    }
+
+    /** Starts the timer that redraws the line. */
+    ProgressLine start() {
+        timer.start();
+        return this;
     }
 
     @Override
     public synchronized void tileDone(Image image, int x0, int y0, int x1, int y1, int done, int total) {
-        long now = System.nanoTime();
-        if (now - lastDraw < INTERVAL_NANOS && done < total) {
-            return;
-        }
-        lastDraw = now;
-        String s = String.format("%s: %3d%%  %.1f s", label, 100L * done / total, (now - start) / 1e9);
-        width = Math.max(width, s.length());
-        err.print("\r" + s);
-        err.flush();
+        pixelsDone += (long) (x1 - x0) * (y1 - y0);
     }
 
-    /** Erases the line. */
-    synchronized void clear() {
-        if (width > 0) {
-            err.print("\r" + " ".repeat(width) + "\r");
-            err.flush();
+    @Override
+    public synchronized void passDone(Image image, int pass, int passes) {
+        this.pass = pass + 1;
+        this.passes = Math.max(1, passes);
+        pixelsDone = 0;
+    }
+
+    /** The share of the work done, 0 to 1. */
+    synchronized double share() {
+        double inPass = Math.min(1.0, (double) pixelsDone / pixels);
+        return Math.min(1.0, (Math.min(pass, passes) + (pass < passes ? inPass : 0)) / passes);
+    }
+
+    /** Draws the line now; false once it has been cleared. */
+    synchronized boolean redraw() {
+        if (closed) {
+            return false;
         }
+        String s = line(label, share(), System.nanoTime() - start);
+        err.print("\r" + s + (s.length() < drawn ? " ".repeat(drawn - s.length()) : ""));
+        err.flush();
+        drawn = Math.max(drawn, s.length());
+        return true;
+    }
+
+    /** {@code label  42% [========>           ] 3.1 s, about 4.2 s left}, at most {@link #WIDTH} columns. */
+    static String line(String label, double share, long elapsedNanos) {
+        int pct = (int) Math.floor(100 * share);
+        int fill = (int) Math.floor(BAR * share);
+        StringBuilder bar = new StringBuilder(BAR + 2).append('[');
+        for (int i = 0; i < BAR; i++) {
+            bar.append(i < fill ? '=' : i == fill ? '>' : ' ');
+        }
+        bar.append(']');
+        double elapsed = elapsedNanos / 1e9;
+        String time = duration(elapsed);
+        if (share >= 0.02 || share > 0 && elapsed >= 1) {
+            time += ", about " + duration(elapsed * (1 - share) / share) + " left";
+        }
+        String tail = (pct < 10 ? "   " : pct < 100 ? "  " : " ") + pct + "% " + bar + " " + time;
+        int room = WIDTH - tail.length();
+        String name = label.length() <= room ? label : room > 3 ? "..." + label.substring(label.length() - room + 3) : "";
+        return name + tail;
+    }
+
+    /** 4.2 s, 3 min 05 s, 2 h 07 min. */
+    static String duration(double seconds) {
+        if (seconds < 60) {
+            return Main.fixed(Math.round(seconds * 1e9), 1) + " s";
+        }
+        long s = Math.round(seconds);
+        if (s < 3600) {
+            return s / 60 + " min " + (s % 60 < 10 ? "0" : "") + s % 60 + " s";
+        }
+        long m = s / 60;
+        return m / 60 + " h " + (m % 60 < 10 ? "0" : "") + m % 60 + " min";
+    }
+
+    /** Erases the line and stops the timer (from the render's end, a failure or the Ctrl+C hook). */
+    void clear() {
+        synchronized (this) {
+            if (closed) {
+                return;
+            }
+            closed = true;
+            if (drawn > 0) {
+                err.print("\r" + " ".repeat(drawn) + "\r");
+                err.flush();
+            }
+        }
+        timer.interrupt();
     }
 }

@@ -164,41 +164,39 @@ public final class ObjFile {
 
         @Override
         public void addVertex(FloatTuple v) {
-            if (v.getDimensions() < 3) {
-                throw bad("has " + v.getDimensions() + " coordinate" + (v.getDimensions() == 1 ? "" : "s") + " (expected 'v x y z')");
+            if (v.getDimensions() < 3) {      // a fourth number (w, a weight for curves) is allowed and ignored
+                throw coordinates(v, "v");
             }
-            float x = v.getX(), y = v.getY(), z = v.getZ();
-            if (!Float.isFinite(x) || !Float.isFinite(y) || !Float.isFinite(z)) {
-                throw bad("has a coordinate that is not a finite float (expected 'v x y z', each within +-3.4e38)");
-            }
-            if (3 * vertices + 3 > pos.length) {
-                pos = Arrays.copyOf(pos, 2 * pos.length);
-            }
-            pos[3 * vertices] = x;
-            pos[3 * vertices + 1] = y;
-            pos[3 * vertices + 2] = z;
-            vertices++;
+            pos = append(pos, vertices++, v, "v");
         }
 
         @Override
         public void addNormal(FloatTuple n) {
             if (n.getDimensions() != 3) {
-                throw bad("has " + n.getDimensions() + " coordinate" + (n.getDimensions() == 1 ? "" : "s") + " (expected 'vn x y z')");
+                throw coordinates(n, "vn");
             }
-            float x = n.getX(), y = n.getY(), z = n.getZ();
-            if (!Float.isFinite(x) || !Float.isFinite(y) || !Float.isFinite(z)) {
-                throw bad("has a coordinate that is not a finite float (expected 'vn x y z')");
-            }
-            if (x == 0 && y == 0 && z == 0) {
+            if (n.getX() == 0 && n.getY() == 0 && n.getZ() == 0) {
                 throw bad("has length 0 (expected 'vn x y z', a direction)");
             }
-            if (3 * normalCount + 3 > nrm.length) {
-                nrm = Arrays.copyOf(nrm, Math.max(3 * 1024, 2 * nrm.length));
+            nrm = append(nrm, normalCount++, n, "vn");
+        }
+
+        private Bad coordinates(FloatTuple t, String key) {
+            int d = t.getDimensions();
+            return bad("has " + d + " coordinate" + (d == 1 ? "" : "s") + " (expected '" + key + " x y z')");
+        }
+
+        /** Checks x, y, z are finite and stores them as entry {@code i} of {@code a}, grown as needed. */
+        private float[] append(float[] a, int i, FloatTuple t, String key) {
+            float x = t.getX(), y = t.getY(), z = t.getZ();
+            if (!Float.isFinite(x) || !Float.isFinite(y) || !Float.isFinite(z)) {
+                throw bad("has a coordinate that is not a finite float (expected '" + key + " x y z', each within +-3.4e38)");
             }
-            nrm[3 * normalCount] = x;
-            nrm[3 * normalCount + 1] = y;
-            nrm[3 * normalCount + 2] = z;
-            normalCount++;
+            float[] out = 3 * i + 3 > a.length ? Arrays.copyOf(a, Math.max(3 * 1024, 2 * a.length)) : a;
+            out[3 * i] = x;
+            out[3 * i + 1] = y;
+            out[3 * i + 2] = z;
+            return out;
         }
 
         @Override

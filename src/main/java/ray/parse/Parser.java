@@ -62,6 +62,8 @@ public final class Parser {
     private int firstDegenerateLine;
 
     private int line;
+    /** Lines the fast path read (for the test that it is taken: ParserFastPathTest). */
+    private int fastLines;
 
     private Parser(String file, ClassLoader loader) {
         this.file = file;
@@ -105,6 +107,17 @@ public final class Parser {
         }
     }
 
+    /** For tests: how many lines of a scene file's bytes the fast path read (the rest took the general path). */
+    static int fastLineCount(byte[] bytes, String name) throws SceneFormatException {
+        Parser p = new Parser(name, Parser.class.getClassLoader());
+        try {
+            p.run(Lines.of(new java.io.ByteArrayInputStream(bytes), name), new ArrayList<>());
+        } catch (IOException e) {
+            throw new AssertionError(e);     // a byte array cannot fail to read
+        }
+        return p.fastLines;
+    }
+
     /** Parses scene text; {@code name} is used in messages. */
     public static Scene parse(String text, String name, List<String> warnings) throws SceneFormatException {
         return parse(text, name, warnings, Parser.class.getClassLoader());
@@ -125,6 +138,7 @@ public final class Parser {
             line = lines.line();
             if (lines.ascii() && fastLine(lines.bytes(), lines.length())) {
                 any |= lines.length() > 0;
+                fastLines++;
                 continue;
             }
             String raw = lines.text();
@@ -582,10 +596,12 @@ public final class Parser {
         long pixels = (long) scene.width * scene.height;
         if (pixels > Limits.maxPixels()) {
             line = globalLines.get("Width");
-            String why = Limits.maxPixels() < Limits.heapPixels()
-                    ? String.format("at most %,d pixels, the most one image array holds", Limits.MAX_ARRAY_PIXELS)
-                    : String.format("at most %,d pixels, half of this JVM's %,d MiB heap at %d bytes a pixel; raise the heap with -Xmx, "
-                            + "e.g. JAVA_OPTS=-Xmx16g", Limits.maxPixels(), Runtime.getRuntime().maxMemory() >> 20, Limits.BYTES_PER_PIXEL);
+            // no heap helps beyond what one array can index: advise -Xmx only where it would be enough
+            String why = pixels > Limits.MAX_ARRAY_PIXELS
+                    ? String.format("at most %,d pixels, the most one image array holds whatever the heap", Limits.MAX_ARRAY_PIXELS)
+                    : String.format("at most %,d pixels, half of this JVM's %,d MiB heap at %d bytes a pixel; raise the heap, "
+                            + "e.g. JAVA_OPTS=-Xmx%dg", Limits.maxPixels(), Runtime.getRuntime().maxMemory() >> 20, Limits.BYTES_PER_PIXEL,
+                            Limits.heapGigabytesFor(pixels));
             throw error(String.format("Width %d x Height %d = %,d pixels would need about %,d MiB (expected %s)",
                     scene.width, scene.height, pixels, pixels * Limits.BYTES_PER_PIXEL >> 20, why));
         }

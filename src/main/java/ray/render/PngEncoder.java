@@ -17,9 +17,11 @@ import java.util.zip.Deflater;
  * filters per row gives, at a fifth of the filtering time, which matters in a process that writes one
  * image and exits before the JIT has warmed up). The rows are cut into bands; each band is filtered
  * and deflated on its own, the bands shared between this thread and helper threads, and the raw
- * deflate streams (each ended on a byte boundary by a sync flush, the last one final) are joined into
- * one zlib stream with one Adler-32 over all the data: a standard PNG any decoder reads, slightly
- * larger than one continuous stream because no match crosses a band.
+ * deflate streams (each ended on a byte boundary by a sync flush, the last one final) form one zlib
+ * stream, written as one IDAT chunk per band, with one Adler-32 over all the data (combined from the
+ * bands'): a standard PNG any decoder reads, slightly larger than one continuous stream because no
+ * match crosses a band. No buffer ever holds the whole image's scanlines, so the image-size limit is
+ * the renderer's (its RGB doubles), not the encoder's.
  */
 public final class PngEncoder {
 
@@ -33,14 +35,35 @@ public final class PngEncoder {
     private PngEncoder() {
     }
 
-    /** The PNG file's bytes for {@code image}. */
+    /** The PNG file's bytes for {@code image} (small images: a byte array holds at most 2 GiB). */
     public static byte[] encode(Image image) throws IOException {
+        ByteArrayOutputStream out = new ByteArrayOutputStream();
+        write(image, out);
+        return out.toByteArray();
+    }
+
+    /**
+     * The largest array, in bytes, that encoding a {@code w} x {@code h} image allocates: one band's
+     * scanlines (a filter byte and 3 bytes per pixel per row) and its deflated copy, at most a little
+     * larger. Long arithmetic: the encoder never holds the whole image's scanlines, so no size the
+     * image limit admits overflows an int here (see {@link ray.parse.Limits}).
+     */
+    public static long largestBuffer(long w, long h) {
+        long band = Math.min(h, BAND_ROWS) * (3 * w + 1);
+        return band + band / 1000 + 64 * 1024 + 64;       // deflate's worst case: +5 bytes per 16 KiB stored block
+    }
+
+    /**
+     * Writes the PNG for {@code image} to {@code out}: IHDR, one IDAT per band (together one zlib
+     * stream, which the PNG format allows to be split over IDAT chunks at any byte), IEND.
+     */
+    public static void write(Image image, OutputStream out) throws IOException {
         int w = image.width, h = image.height;
-        int stride = 3 * w + 1;
-        byte[] filtered = new byte[h * stride];
+        if (w < 1 || h < 1) {
+            throw new IllegalArgumentException("a PNG needs at least 1 x 1 pixels, not " + w + " x " + h);
+        }
         int bands = (h + BAND_ROWS - 1) / BAND_ROWS;
-        byte[][] parts = new byte[bands][];
-        Bands work = new Bands(image, filtered, parts);
+        Bands work = new Bands(image, bands);
         int helpers = Math.min(bands, Runtime.getRuntime().availableProcessors()) - 1;
         Thread[] threads = new Thread[Math.max(0, helpers)];
         for (int i = 0; i < threads.length; i++) {
@@ -59,23 +82,6 @@ public final class PngEncoder {
         if (work.failure != null) {
             throw new IOException("PNG encoding failed", work.failure);
         }
-        Adler32 adler = new Adler32();
-        adler.update(filtered, 0, filtered.length);
-        int zlen = 2 + 4;
-        for (byte[] p : parts) {
-            zlen += p.length;
-        }
-        byte[] z = new byte[zlen];
-        z[0] = 0x78;                 // deflate, 32 KiB window
-        z[1] = 0x5E;                 // FLEVEL 1 (fast), FCHECK so that 0x785E is a multiple of 31
-        int pos = 2;
-        for (byte[] p : parts) {
-            System.arraycopy(p, 0, z, pos, p.length);
-            pos += p.length;
-        }
-        putInt(z, pos, (int) adler.getValue());
-
-        ByteArrayOutputStream out = new ByteArrayOutputStream(zlen + 64);
         out.write(new byte[] {(byte) 0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'});
         byte[] ihdr = new byte[13];
         putInt(ihdr, 0, w);
@@ -83,42 +89,74 @@ public final class PngEncoder {
         ihdr[8] = 8;      // bit depth
         ihdr[9] = 2;      // colour type: RGB
         // compression 0, filter method 0, no interlace
-        chunk(out, "IHDR", ihdr, ihdr.length);
-        chunk(out, "IDAT", z, z.length);
-        chunk(out, "IEND", new byte[0], 0);
-        return out.toByteArray();
-    }
-
-    /** Writes the PNG for {@code image} to {@code out}. */
-    public static void write(Image image, OutputStream out) throws IOException {
-        if (image.width < 1 || image.height < 1) {
-            throw new IllegalArgumentException("a PNG needs at least 1 x 1 pixels, not " + image.width + " x " + image.height);
+        chunk(out, "IHDR", ihdr);
+        long adler = 1;
+        for (int b = 0; b < bands; b++) {
+            adler = b == 0 ? work.adlers[0] : adlerCombine(adler, work.adlers[b], work.lengths[b]);
         }
-        out.write(encode(image));
+        // deflate, 32 KiB window; FLEVEL 1 (fast), FCHECK so that 0x785E is a multiple of 31
+        byte[] zlibHeader = {0x78, 0x5E};
+        byte[] trailer = new byte[4];
+        putInt(trailer, 0, (int) adler);
+        for (int b = 0; b < bands; b++) {
+            chunk(out, "IDAT", b == 0 ? zlibHeader : null, work.parts[b], b == bands - 1 ? trailer : null);
+            work.parts[b] = null;
+        }
+        chunk(out, "IEND", new byte[0]);
     }
 
-    /** The bands of one image, handed out to whichever thread asks next. */
+    /** zlib's adler32_combine: the Adler-32 of A followed by B from those of A and B and B's length. */
+    static long adlerCombine(long adler1, long adler2, long len2) {
+        final long base = 65521;
+        long rem = len2 % base;
+        long sum1 = adler1 & 0xFFFF;
+        long sum2 = rem * sum1 % base;
+        sum1 += (adler2 & 0xFFFF) + base - 1;
+        sum2 += ((adler1 >> 16) & 0xFFFF) + ((adler2 >> 16) & 0xFFFF) + base - rem;
+        if (sum1 >= base) {
+            sum1 -= base;
+        }
+        if (sum1 >= base) {
+            sum1 -= base;
+        }
+        if (sum2 >= base << 1) {
+            sum2 -= base << 1;
+        }
+        if (sum2 >= base) {
+            sum2 -= base;
+        }
+        return sum1 | sum2 << 16;
+    }
+
+    /** The bands of one image, handed out to whichever thread asks next; each filtered in its own buffer. */
     private static final class Bands implements Runnable {
         final Image image;
-        final byte[] filtered;
         final byte[][] parts;
+        final long[] adlers;
+        final int[] lengths;
         final java.util.concurrent.atomic.AtomicInteger next = new java.util.concurrent.atomic.AtomicInteger();
         volatile Throwable failure;
 
-        Bands(Image image, byte[] filtered, byte[][] parts) {
+        Bands(Image image, int bands) {
             this.image = image;
-            this.filtered = filtered;
-            this.parts = parts;
+            this.parts = new byte[bands][];
+            this.adlers = new long[bands];
+            this.lengths = new int[bands];
         }
 
         @Override
         public void run() {
             try {
                 int stride = 3 * image.width + 1;
+                byte[] filtered = new byte[Math.min(image.height, BAND_ROWS) * stride];
                 for (int b; (b = next.getAndIncrement()) < parts.length; ) {
-                    int y0 = b * BAND_ROWS, y1 = Math.min(image.height, y0 + BAND_ROWS);
-                    filterRows(image, y0, y1, filtered);
-                    parts[b] = deflate(filtered, y0 * stride, y1 * stride, b == parts.length - 1);
+                    int y0 = b * BAND_ROWS, y1 = Math.min(image.height, y0 + BAND_ROWS), n = (y1 - y0) * stride;
+                    filterRows(image, y0, y1, filtered, 0);
+                    Adler32 a = new Adler32();
+                    a.update(filtered, 0, n);
+                    adlers[b] = a.getValue();
+                    lengths[b] = n;
+                    parts[b] = deflate(filtered, 0, n, b == parts.length - 1);
                 }
             } catch (RuntimeException | Error e) {
                 failure = e;
@@ -151,12 +189,12 @@ public final class PngEncoder {
     /** The image's rows as PNG scanlines: a filter byte, then the filtered RGB bytes. */
     static byte[] filterRows(Image image) {
         byte[] out = new byte[image.height * (3 * image.width + 1)];
-        filterRows(image, 0, image.height, out);
+        filterRows(image, 0, image.height, out, 0);
         return out;
     }
 
-    /** Rows [y0, y1) as Paeth-filtered scanlines into {@code out}, at their place in the whole image's. */
-    static void filterRows(Image image, int y0, int y1, byte[] out) {
+    /** Rows [y0, y1) as Paeth-filtered scanlines into {@code out}, row y0 at index {@code at}. */
+    static void filterRows(Image image, int y0, int y1, byte[] out, int at) {
         int n = 3 * image.width;
         byte[] prev = new byte[n], cur = new byte[n];
         if (y0 > 0) {
@@ -164,7 +202,7 @@ public final class PngEncoder {
         }
         for (int y = y0; y < y1; y++) {
             quantize(image, y, cur);
-            int o = y * (n + 1);
+            int o = (y - y0) * (n + 1) + at;
             out[o] = PAETH;
             paeth(cur, prev, out, o + 1, n);
             byte[] t = prev;
@@ -193,20 +231,30 @@ public final class PngEncoder {
         }
     }
 
-    private static void chunk(OutputStream out, String type, byte[] data, int len) throws IOException {
-        byte[] head = new byte[8];
-        putInt(head, 0, len);
+    private static void chunk(OutputStream out, String type, byte[] data) throws IOException {
+        chunk(out, type, null, data, null);
+    }
+
+    /** One chunk whose data is {@code head}, {@code data} and {@code tail} (either may be null). */
+    private static void chunk(OutputStream out, String type, byte[] head, byte[] data, byte[] tail) throws IOException {
+        int len = (head == null ? 0 : head.length) + data.length + (tail == null ? 0 : tail.length);
+        byte[] start = new byte[8];
+        putInt(start, 0, len);
         for (int i = 0; i < 4; i++) {
-            head[4 + i] = (byte) type.charAt(i);
+            start[4 + i] = (byte) type.charAt(i);
         }
         CRC32 crc = new CRC32();
-        crc.update(head, 4, 4);
-        crc.update(data, 0, len);
-        byte[] tail = new byte[4];
-        putInt(tail, 0, (int) crc.getValue());
-        out.write(head);
-        out.write(data, 0, len);
-        out.write(tail);
+        crc.update(start, 4, 4);
+        out.write(start);
+        for (byte[] piece : new byte[][] {head, data, tail}) {
+            if (piece != null) {
+                crc.update(piece, 0, piece.length);
+                out.write(piece);
+            }
+        }
+        byte[] end = new byte[4];
+        putInt(end, 0, (int) crc.getValue());
+        out.write(end);
     }
 
     private static void putInt(byte[] b, int o, int v) {

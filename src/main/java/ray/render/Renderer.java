@@ -168,7 +168,7 @@ public final class Renderer {
     }
 
     /**
-     * Hands the image's tiles, in scan order, to the render threads, each with its own context; reports
+     * Hands the image's tiles, spread over the image ({@link #spreadStride}), to the render threads, each with its own context; reports
      * each finished tile of {@code image} to the listener; adds the threads' ray counts to {@link #stats()}.
      * Rethrows the first failure; throws {@link RenderCancelledException} when cancelled.
      */
@@ -179,7 +179,9 @@ public final class Renderer {
     /** {@link #runTiles(Image, TileWork)}, telling the listener about finished tiles only when {@code report}. */
     void runTiles(Image image, TileWork work, boolean report) {
         int w = scene.width, h = scene.height;
-        int tilesX = (w + TILE - 1) / TILE, tilesY = (h + TILE - 1) / TILE, total = tilesX * tilesY;
+        final int size = tileSize(w, h, threads);
+        int tilesX = (w + size - 1) / size, tilesY = (h + size - 1) / size, total = tilesX * tilesY;
+        final long stride = spreadStride(total);
         AtomicInteger next = new AtomicInteger(), done = new AtomicInteger();
         int n = Math.max(1, Math.min(threads, total));
         List<Thread> workers = new ArrayList<>();
@@ -195,9 +197,10 @@ public final class Renderer {
                     TraceContext.bind(ctx);
                     try {
                         TileWorker worker = work.worker(ctx);
-                        for (int tile; !cancelled && (tile = next.getAndIncrement()) < total; ) {
-                            int x0 = (tile % tilesX) * TILE, y0 = (tile / tilesX) * TILE;
-                            int x1 = Math.min(w, x0 + TILE), y1 = Math.min(h, y0 + TILE);
+                        for (int k; !cancelled && (k = next.getAndIncrement()) < total; ) {
+                            int tile = (int) (k * stride % total);
+                            int x0 = (tile % tilesX) * size, y0 = (tile / tilesX) * size;
+                            int x1 = Math.min(w, x0 + size), y1 = Math.min(h, y0 + size);
                             worker.tile(x0, y0, x1, y1);
                             if (report) {
                                 listener.tileDone(image, x0, y0, x1, y1, done.incrementAndGet(), total);
@@ -231,20 +234,62 @@ public final class Renderer {
         for (TraceContext ctx : contexts) {
             stats.add(ctx.stats);
         }
-        if (failure[0] instanceof RuntimeException) {
-            throw (RuntimeException) failure[0];
-        } else if (failure[0] instanceof Error) {
-            throw (Error) failure[0];
-        } else if (failure[0] != null) {
-            throw new IllegalStateException(failure[0]);
+        if (failure[0] != null) {
+            // rethrown as itself, even a checked exception a user's class threw sneakily: wrapping it
+            // would hide its class and call its (user-written) getMessage() here
+            throw Renderer.<RuntimeException>sneaky(failure[0]);
         }
         if (cancelled) {
             throw new RenderCancelledException();
         }
     }
 
+    /**
+     * The tile side for a w x h image on {@code threads} threads: {@value #TILE}, halved (down to single
+     * pixels) while the image would have fewer than four tiles per thread, so a small but costly image
+     * still keeps every core busy to the end. Every pixel depends only on the scene, so the tiling
+     * never changes the image.
+     */
+    public static int tileSize(int w, int h, int threads) {
+        int size = TILE;
+        while (size > 1 && (long) ((w + size - 1) / size) * ((h + size - 1) / size) < 4L * threads) {
+            size /= 2;
+        }
+        return size;
+    }
+
+    /**
+     * Tiles are handed out in the order k * stride mod total (stride about 0.618 total, coprime with
+     * it): each stretch of the order is spread over the whole image, so the share of pixels done is an
+     * honest estimate of the share of work done (in scan order an empty sky first makes it race ahead).
+     */
+    static long spreadStride(int total) {
+        if (total <= 2) {
+            return 1;
+        }
+        long s = Math.max(1, Math.round(total * 0.6180339887498949));
+        while (gcd(s, total) != 1) {
+            s++;
+        }
+        return s;
+    }
+
+    private static long gcd(long a, long b) {
+        while (b != 0) {
+            long t = a % b;
+            a = b;
+            b = t;
+        }
+        return a;
+    }
+
     ProgressListener listener() {
         return listener;
+    }
+
+    @SuppressWarnings("unchecked")
+    private static <T extends Throwable> T sneaky(Throwable t) throws T {
+        throw (T) t;
     }
 
     /** The mean of pixel (x, y)'s n_s x n_s samples, written into {@code out}. */

@@ -178,22 +178,12 @@ public class CSG extends Surface {
      */
     private static double next(Surface s, Ray q, double tMin, double after, IntersectionRecord[] r, int i, Scene scene) {
         IntersectionRecord rec = r[i];
-        javax.vecmath.Vector3d location = rec.location, normal = rec.normal;
         double from = tMin;
         for (int k = 1; k <= 64; k++) {
             q.tMin = from;
             q.tMax = Double.POSITIVE_INFINITY;
             rec.surface = null;
-            boolean hit = s.intersects(q, rec, scene);
-            // framework code may point the record's vectors at its own: copy the values back into ours
-            if (rec.location != location) {
-                location.set(rec.location);
-                rec.location = location;
-            }
-            if (rec.normal != normal) {
-                normal.set(rec.normal);
-                rec.normal = normal;
-            }
+            boolean hit = intersectInto(s, q, rec, scene);
             if (!hit || Double.isNaN(rec.t)) {
                 return Double.POSITIVE_INFINITY;
             }

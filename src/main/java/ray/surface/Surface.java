@@ -65,6 +65,25 @@ public abstract class Surface implements SceneObject {
         return null;
     }
 
+    /**
+     * Calls {@code s.intersects}. Framework code may point the record's vectors at its own objects
+     * ({@code record.normal = normal}); the record gets its own vectors back, holding the values, so
+     * later writes into the record (the next hit's fill) cannot change the surface's fields.
+     */
+    public static boolean intersectInto(Surface s, Ray ray, IntersectionRecord rec, Scene scene) {
+        javax.vecmath.Vector3d location = rec.location, normal = rec.normal;
+        boolean hit = s.intersects(ray, rec, scene);
+        if (rec.location != location) {
+            location.set(rec.location);
+            rec.location = location;
+        }
+        if (rec.normal != normal) {
+            normal.set(rec.normal);
+            rec.normal = normal;
+        }
+        return hit;
+    }
+
     /** True when the surface can never be hit (e.g. a zero-area triangle); it is left out of the scene. */
     public boolean isDegenerate() {
         return false;

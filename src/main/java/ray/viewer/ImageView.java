@@ -1,6 +1,7 @@
 package ray.viewer;
 
 import java.awt.Color;
+import java.awt.Component;
 import java.awt.Dimension;
 import java.awt.Graphics;
 import java.awt.Graphics2D;
@@ -8,8 +9,10 @@ import java.awt.Rectangle;
 import java.awt.RenderingHints;
 import java.awt.image.BufferedImage;
 import javax.swing.JComponent;
+import javax.swing.JScrollPane;
 import javax.swing.Scrollable;
 import javax.swing.SwingConstants;
+import javax.swing.SwingUtilities;
 import ray.render.Image;
 
 /**
@@ -27,6 +30,21 @@ final class ImageView extends JComponent implements Scrollable {
     ImageView() {
         setOpaque(true);
         setBackground(new Color(0x2b2b2b));
+        // Ctrl+wheel zooms; the plain wheel still scrolls (handed on to the scroll pane)
+        addMouseWheelListener(e -> {
+            if (e.isControlDown() && shown != null) {
+                if (e.getWheelRotation() < 0) {
+                    zoomIn();
+                } else if (e.getWheelRotation() > 0) {
+                    zoomOut();
+                }
+            } else {
+                Component pane = SwingUtilities.getAncestorOfClass(JScrollPane.class, this);
+                if (pane != null) {
+                    pane.dispatchEvent(SwingUtilities.convertMouseEvent(this, e, pane));
+                }
+            }
+        });
     }
 
     /** True when there is an image (finished or in progress) to look at. */

@@ -11,7 +11,6 @@ import java.awt.Insets;
 import java.awt.Rectangle;
 import java.awt.Toolkit;
 import java.awt.Window;
-import java.awt.datatransfer.DataFlavor;
 import java.awt.event.WindowAdapter;
 import java.awt.event.WindowEvent;
 import java.io.File;
@@ -28,7 +27,6 @@ import javax.swing.JScrollPane;
 import javax.swing.JTextArea;
 import javax.swing.SwingUtilities;
 import javax.swing.Timer;
-import javax.swing.TransferHandler;
 import ray.render.Image;
 
 /**
@@ -83,7 +81,7 @@ public final class ViewingFrame extends JFrame {
         scroll.setBorder(BorderFactory.createEmptyBorder());
         add(scroll, BorderLayout.CENTER);
         add(south, BorderLayout.SOUTH);
-        setTransferHandler(new SceneDrop());
+        setTransferHandler(new SceneDrop(this::load, this::showError));
         setDefaultCloseOperation(DISPOSE_ON_CLOSE);
         addWindowListener(new Closing());
         ticker = new Timer(200, e -> tick());
@@ -294,31 +292,6 @@ public final class ViewingFrame extends JFrame {
             }
             setStatus(StatusText.of(job, System.nanoTime()));
             updateActions();
-        }
-    }
-
-    /** Dropping a file onto the window opens it. */
-    private final class SceneDrop extends TransferHandler {
-        private static final long serialVersionUID = 1L;
-
-        @Override
-        public boolean canImport(TransferSupport s) {
-            return s.isDataFlavorSupported(DataFlavor.javaFileListFlavor);
-        }
-
-        @Override
-        public boolean importData(TransferSupport s) {
-            try {
-                List<?> files = (List<?>) s.getTransferable().getTransferData(DataFlavor.javaFileListFlavor);
-                if (files.isEmpty() || !(files.get(0) instanceof File f)) {
-                    return false;
-                }
-                load(f.toPath());
-                return true;
-            } catch (java.awt.datatransfer.UnsupportedFlavorException | java.io.IOException e) {
-                showError("Cannot open the dropped file: " + Failures.reason(e));
-                return false;
-            }
         }
     }
 

@@ -37,11 +37,13 @@ class MainBadInputTest {
         return new Run(status, out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8));
     }
 
+    /** An earlier image: the PNG signature, then bytes of its own (an existing file that is no PNG is never replaced). */
     static byte[] oldPng() {
         byte[] b = new byte[300];
         for (int i = 0; i < b.length; i++) {
             b[i] = (byte) (i * 7);
         }
+        System.arraycopy(new byte[] {(byte) 0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'}, 0, b, 0, 8);
         return b;
     }
 
@@ -72,7 +74,7 @@ class MainBadInputTest {
         Run r = run(scene.toString());
         assertEquals(1, r.status());
         assertEquals(1, r.errLines().size(), r.err());
-        assertTrue(r.err().startsWith(scene + ":1: ") && r.err().contains("-Xmx"), r.err());
+        assertTrue(r.err().startsWith(scene + ":1: ") && r.err().contains("whatever the heap") && !r.err().contains("-Xmx"), r.err());
         assertArrayEquals(oldPng(), Files.readAllBytes(png));
     }
 
@@ -96,7 +98,11 @@ class MainBadInputTest {
     @Test
     void binarySceneIsOneLine(@TempDir Path dir) throws IOException {
         Path scene = dir.resolve("image.txt");
-        Files.write(scene, oldPng());
+        byte[] binary = new byte[300];
+        for (int i = 0; i < binary.length; i++) {
+            binary[i] = (byte) (i * 7);      // a NUL on the first line
+        }
+        Files.write(scene, binary);
         Run r = run(scene.toString());
         assertEquals(1, r.status());
         assertEquals(1, r.errLines().size(), r.err());

@@ -96,7 +96,7 @@ class MainTest {
     @Test
     void existingPngIsKeptWhenItsSceneIsBad() throws Exception {
         Path bad = write("bad.txt", BAD);
-        byte[] old = {1, 2, 3, 4};
+        byte[] old = MainBadInputTest.oldPng();
         Files.write(dir.resolve("bad.png"), old);
         assertEquals(1, run(bad.toString()));
         assertArrayEquals(old, Files.readAllBytes(dir.resolve("bad.png")));

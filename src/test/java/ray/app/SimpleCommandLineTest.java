@@ -26,6 +26,8 @@ class SimpleCommandLineTest {
         Main two = Main.simpleCommandLine(new String[] {"--threads", "1", "a.txt", "b.txt"});
         assertEquals(List.of(Path.of("a.txt"), Path.of("b.txt")), two.scenes);
         assertEquals(1, two.threads);
+        Main at = Main.simpleCommandLine(new String[] {"@scene.txt"});    // no argument files: a scene like any other
+        assertEquals(List.of(Path.of("@scene.txt")), at.scenes);
     }
 
     /** Anything picocli might read differently, or must report, goes to picocli. */
@@ -35,7 +37,7 @@ class SimpleCommandLineTest {
             {}, {"--help"}, {"-h"}, {"--version"}, {"--bench"}, {"--output=x.png", "a.txt"}, {"-j4", "a.txt"},
             {"-j", "-1", "a.txt"}, {"-j", "x", "a.txt"}, {"-j", "1234567890", "a.txt"}, {"-o"}, {"a.txt", "-o", "-q"},
             {"-q", "-q", "a.txt"}, {"--stats", "--stats", "a.txt"}, {"-o", "a.png", "-o", "b.png", "a.txt"},
-            {"-j", "1", "-j", "2", "a.txt"}, {"@args.txt"}, {"-"}, {"--", "a.txt"}, {""}, {"-qj", "2", "a.txt"},
+            {"-j", "1", "-j", "2", "a.txt"}, {"-"}, {"--", "a.txt"}, {""}, {"-qj", "2", "a.txt"},
         };
         for (String[] c : cases) {
             assertNull(Main.simpleCommandLine(c), () -> String.join(" ", c));

@@ -385,12 +385,25 @@ class ParserTest {
             assertError(line + "\n" + BASE, 1, found, expected);   // fails at line 1, before any later line counts
         }
 
-        /** A size within the per-side limits that could still never be held in memory is refused before allocating. */
+        /** A size within the per-side limits that no heap could hold is refused, without advising a heap. */
         @Test
-        void imageTooLargeForTheHeapNamesTheLimitAndHowToRaiseIt() {
+        void imageTooLargeForAnyHeapNamesTheArrayLimit() {
             SceneFormatException e = assertError("Width 65536\nHeight 65536\n\nCamera Camera\n", 1,
-                    "4,294,967,296 pixels", "at most", "-Xmx");
-            assertTrue(e.getMessage().contains(String.format("%,d", Limits.maxPixels())), e.getMessage());
+                    "4,294,967,296 pixels", "at most", String.format("%,d", Limits.MAX_ARRAY_PIXELS), "whatever the heap");
+            assertFalse(e.getMessage().contains("-Xmx"), "no heap would help: " + e.getMessage());
+        }
+
+        /** Too large for this heap but not for a larger one: the advised -Xmx is one that admits the image. */
+        @Test
+        void imageTooLargeForThisHeapAdvisesAHeapThatWouldDo() {
+            long pixels = 20000L * 20000;
+            assumeTrue(pixels > Limits.maxPixels() && pixels <= Limits.MAX_ARRAY_PIXELS, "needs a heap under 25 GiB");
+            SceneFormatException e = assertError("Width 20000\nHeight 20000\n\nCamera Camera\n", 1,
+                    "400,000,000 pixels", "at most", "-Xmx" + Limits.heapGigabytesFor(pixels) + "g");
+            long admitted = (Limits.heapGigabytesFor(pixels) << 30) / 2 / Limits.BYTES_PER_PIXEL;
+            assertTrue(admitted >= pixels, "the advised heap admits the image: " + admitted);
+            assertTrue(((Limits.heapGigabytesFor(pixels) - 1) << 30) / 2 / Limits.BYTES_PER_PIXEL < pixels * 17 / 16,
+                    "and is not much more than needed");
         }
 
         @Test

@@ -65,19 +65,19 @@ class PngEncoderTest {
     void idatIsOneCompleteZlibStream() throws Exception {
         Image img = randomImage(64, 2 * PngEncoder.BAND_ROWS + 1, 4);
         byte[] png = PngEncoder.encode(img);
-        int pos = 8, idatStart = -1, idatLen = 0;
+        int pos = 8;
+        java.io.ByteArrayOutputStream idat = new java.io.ByteArrayOutputStream();   // the IDATs' data joined
         while (pos < png.length) {
             int len = (png[pos] & 0xFF) << 24 | (png[pos + 1] & 0xFF) << 16 | (png[pos + 2] & 0xFF) << 8 | png[pos + 3] & 0xFF;
             String type = new String(png, pos + 4, 4, java.nio.charset.StandardCharsets.US_ASCII);
             if (type.equals("IDAT")) {
-                idatStart = pos + 8;
-                idatLen = len;
+                idat.write(png, pos + 8, len);
             }
             pos += 12 + len;
         }
         assertEquals(png.length, pos);
         Inflater inf = new Inflater();
-        inf.setInput(png, idatStart, idatLen);
+        inf.setInput(idat.toByteArray());
         byte[] raw = new byte[img.height * (3 * img.width + 1) + 1];
         int n = inf.inflate(raw);
         assertEquals(true, inf.finished());
@@ -86,5 +86,51 @@ class PngEncoderTest {
         byte[] got = new byte[n];
         System.arraycopy(raw, 0, got, 0, n);
         assertArrayEquals(expected, got);
+    }
+
+    /** zlib's combination rule agrees with one Adler-32 over the joined data (seeded lengths, including 0 and > 65521). */
+    @Test
+    void adlerCombineEqualsTheAdlerOfTheJoinedData() {
+        java.util.Random r = new java.util.Random(11);
+        for (int trial = 0; trial < 200; trial++) {
+            byte[] a = new byte[trial == 0 ? 0 : r.nextInt(200_000)], b = new byte[trial == 1 ? 0 : r.nextInt(200_000)];
+            r.nextBytes(a);
+            r.nextBytes(b);
+            java.util.zip.Adler32 x = new java.util.zip.Adler32(), y = new java.util.zip.Adler32(), all = new java.util.zip.Adler32();
+            x.update(a);
+            y.update(b);
+            all.update(a);
+            all.update(b);
+            assertEquals(all.getValue(), PngEncoder.adlerCombine(x.getValue(), y.getValue(), b.length), "seed 11, trial " + trial);
+        }
+    }
+
+    /**
+     * The image limit and the encoder's buffers agree: at the largest pixel count the parser admits,
+     * in every shape the side limit allows, no buffer the encoder allocates exceeds what a Java array
+     * holds (computed, not allocated). The old single scanline buffer, h * (3w + 1) bytes, did not fit.
+     */
+    @Test
+    void everyBufferFitsAnArrayAtTheImageLimit() {
+        long max = ray.parse.Limits.MAX_ARRAY_PIXELS, arrayMax = Integer.MAX_VALUE - 8;
+        long side = ray.parse.Limits.MAX_SIDE;
+        long worstW = 0, worstH = 0;      // the admitted shape with the most scanline bytes, h * (3w + 1)
+        for (long h = 1; h <= side; h++) {
+            long w = Math.min(side, max / h);
+            if (h * (3 * w + 1) > worstH * (3 * worstW + 1)) {
+                worstW = w;
+                worstH = h;
+            }
+        }
+        long[][] shapes = {{side, max / side}, {max / side, side}, {(long) Math.sqrt(max), (long) Math.sqrt(max)}, {side, 1}, {1, side},
+            {worstW, worstH}};
+        for (long[] s : shapes) {
+            long w = s[0], h = s[1];
+            org.junit.jupiter.api.Assertions.assertTrue(w * h <= max && w <= side && h <= side, w + " x " + h + " is admitted");
+            org.junit.jupiter.api.Assertions.assertTrue(3 * w * h <= arrayMax, "RGB doubles of " + w + " x " + h);
+            org.junit.jupiter.api.Assertions.assertTrue(PngEncoder.largestBuffer(w, h) <= arrayMax, "encoder buffer of " + w + " x " + h);
+        }
+        org.junit.jupiter.api.Assertions.assertTrue(worstH * (3 * worstW + 1) > Integer.MAX_VALUE,
+                "a whole-image scanline buffer would not fit: " + worstW + " x " + worstH + " needs " + worstH * (3 * worstW + 1));
     }
 }

@@ -189,7 +189,8 @@ class RendererTest {
     void listenerSeesEveryTileOnceAndEveryPixelIsCovered() throws Exception {
         Scene scene = parse(BUSY);
         int w = scene.width, h = scene.height;
-        int tiles = ((w + Renderer.TILE - 1) / Renderer.TILE) * ((h + Renderer.TILE - 1) / Renderer.TILE);
+        int size = Renderer.tileSize(w, h, 3);
+        int tiles = ((w + size - 1) / size) * ((h + size - 1) / size);
         List<int[]> calls = new ArrayList<>();
         List<double[]> snapshots = new ArrayList<>();
         Image[] seen = new Image[1];
@@ -219,7 +220,7 @@ class RendererTest {
             int[] c = calls.get(i);
             assertEquals(tiles, c[5], "total");
             dones.add(c[4]);
-            assertTrue(c[2] - c[0] <= Renderer.TILE && c[3] - c[1] <= Renderer.TILE, "tile size");
+            assertTrue(c[2] - c[0] <= size && c[3] - c[1] <= size, "tile size");
             int k = 0;
             for (int y = c[1]; y < c[3]; y++) {
                 for (int x = c[0]; x < c[2]; x++) {

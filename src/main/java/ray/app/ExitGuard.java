@@ -1,0 +1,87 @@
+package ray.app;
+
+import java.io.PrintStream;
+import java.util.Map;
+import ray.render.PngWriter;
+
+/**
+ * The shutdown hook of the {@code raytracer} process. It knows which scene is being read or rendered;
+ * when the JVM shuts down during that work, either a user's class called {@code System.exit} (then the
+ * run must not look like a success: one line naming the scene and the calling method, and the process
+ * halts with status 1 whatever status the class asked for) or the user pressed Ctrl+C (then the
+ * progress line is erased). Temporary image files are removed in both cases.
+ */
+final class ExitGuard extends Thread {
+
+    /** Exit status after a user's class ended the program. */
+    static final int USER_EXIT_STATUS = 1;
+
+    private static volatile String scene;
+    private static volatile ProgressLine progress;
+    private static volatile boolean installed;
+    private final PrintStream err;
+
+    private ExitGuard(PrintStream err) {
+        super("raytracer-exit-guard");
+        this.err = err;
+    }
+
+    /** Installs the hook (once per JVM); only the real process does this, never a test calling Main.run. */
+    static void install(PrintStream err) {
+        if (!installed) {
+            installed = true;
+            Runtime.getRuntime().addShutdownHook(new ExitGuard(err));
+        }
+    }
+
+    /** The scene now being read or rendered, or null between scenes. */
+    static void working(String sceneName, ProgressLine line) {
+        progress = line;
+        scene = sceneName;
+    }
+
+    static void idle() {
+        scene = null;
+        progress = null;
+    }
+
+    @Override
+    public void run() {
+        ProgressLine p = progress;
+        if (p != null) {
+            p.clear();
+        }
+        String s = scene;
+        if (s == null) {
+            return;
+        }
+        String caller = exitCaller();
+        if (caller == null) {
+            return;         // a signal (Ctrl+C): the JVM's own status (130) says so; PngWriter's hook cleans up
+        }
+        PngWriter.deletePendingTemporaries();
+        err.println(Main.oneLine(s + ": " + caller + " called System.exit while the scene was being "
+                + "rendered; the program stopped there and no image was written"));
+        err.flush();
+        Runtime.getRuntime().halt(USER_EXIT_STATUS);
+    }
+
+    /** The method that called System.exit or Runtime.exit, or null if no thread is exiting that way. */
+    static String exitCaller() {
+        for (Map.Entry<Thread, StackTraceElement[]> e : Thread.getAllStackTraces().entrySet()) {
+            StackTraceElement[] st = e.getValue();
+            int last = -1;
+            for (int i = 0; i < st.length; i++) {
+                String c = st[i].getClassName();
+                if ((c.equals("java.lang.Runtime") || c.equals("java.lang.System")) && st[i].getMethodName().equals("exit")) {
+                    last = i;
+                }
+            }
+            if (last >= 0 && last + 1 < st.length) {
+                StackTraceElement f = st[last + 1];
+                return f.getClassName() + "." + f.getMethodName();
+            }
+        }
+        return null;
+    }
+}

@@ -1,0 +1,220 @@
+package ray.app;
+
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.attribute.BasicFileAttributes;
+import java.util.ArrayList;
+import java.util.List;
+import ray.Scene;
+import ray.accel.Bvh;
+import ray.parse.Parser;
+import ray.parse.SceneFormatException;
+import ray.render.Image;
+import ray.render.PngEncoder;
+import ray.render.PngWriter;
+import ray.render.Renderer;
+
+/**
+ * One scene of the command line: checks the scene file and the image's destination, reads the scene,
+ * renders it and writes the PNG, reporting any failure as one line on stderr. Whatever a user's class
+ * throws (any {@link Throwable}) fails this scene only; {@link #run} returns whether it succeeded.
+ */
+final class SceneJob {
+
+    private final Main main;
+    private final Path scenePath;
+    private final String name;
+    private final Outputs outputs;
+    private final PrintStream out;
+    private final PrintStream err;
+
+    SceneJob(Main main, Path scenePath, Outputs outputs) {
+        this.main = main;
+        this.scenePath = scenePath;
+        this.name = Outputs.isStdin(scenePath) ? "<stdin>" : scenePath.toString();
+        this.outputs = outputs;
+        this.out = main.out();
+        this.err = main.err();
+    }
+
+    private boolean fail(String message) {
+        err.println(Main.oneLine(message));
+        return false;
+    }
+
+    boolean run() {
+        try {
+            return runChecked();
+        } finally {
+            ExitGuard.idle();
+        }
+    }
+
+    private boolean runChecked() {
+        boolean stdin = Outputs.isStdin(scenePath);
+        if (!stdin) {
+            String refusal = sceneRefusal(scenePath);
+            if (refusal != null) {
+                return fail(name + ": " + refusal);
+            }
+        }
+        Outputs.Target target;
+        PngWriter.Pending pending = null;
+        try {
+            target = outputs.target(scenePath);
+            if (!target.stdout()) {
+                outputs.checkIdentity(scenePath, target.path());
+                pending = prepare(target.path());
+                if (pending == null) {
+                    return false;
+                }
+            }
+        } catch (IOException e) {
+            return fail(name + ": " + e.getMessage());
+        }
+        try {
+            return render(target, pending);
+        } finally {
+            if (pending != null) {
+                pending.abandon();
+            }
+        }
+    }
+
+    /**
+     * Why the scene file cannot be read as a scene without waiting or reading something else, or
+     * null. A missing file or a folder is left to the parser, which says so in its own words.
+     */
+    static String sceneRefusal(Path scene) {
+        BasicFileAttributes a;
+        try {
+            a = Files.readAttributes(scene, BasicFileAttributes.class);
+        } catch (IOException | SecurityException e) {
+            return null;
+        }
+        if (a.isRegularFile() || a.isDirectory()) {
+            return null;
+        }
+        return "cannot read the scene: not a regular file (" + PngWriter.kind(scene)
+                + "); to read a scene from a pipe give '-' and send it to standard input";
+    }
+
+    /** Checks the destination before anything is rendered; null (reported) if it cannot be written. */
+    private PngWriter.Pending prepare(Path png) {
+        try {
+            return PngWriter.prepare(png);
+        } catch (IOException e) {
+            fail(png + ": cannot write the image: " + e.getMessage());
+            return null;
+        }
+    }
+
+    /** 830, 41.2 k, 3.1 M: rays a second, three significant digits at most. */
+    static String raysPerSecond(long rays, long nanos) {
+        double r = nanos > 0 ? rays * 1e9 / nanos : 0;
+        if (r < 1e3) {
+            return Long.toString(Math.round(r));
+        }
+        double v = r < 1e6 ? r / 1e3 : r < 1e9 ? r / 1e6 : r / 1e9;
+        String unit = r < 1e6 ? " k" : r < 1e9 ? " M" : " G";
+        return (v < 10 ? Main.fixed(Math.round(v * 1e9), 2) : v < 100 ? Main.fixed(Math.round(v * 1e9), 1)
+                : Long.toString(Math.round(v))) + unit;
+    }
+
+    private boolean render(Outputs.Target target, PngWriter.Pending pending) {
+        long t0 = System.nanoTime();
+        Scene scene;
+        List<String> warnings = new ArrayList<>();
+        ExitGuard.working(name, null);
+        try {
+            scene = Outputs.isStdin(scenePath)
+                    ? Parser.parse(main.in().readAllBytes(), name, warnings) : Parser.parse(scenePath, warnings);
+        } catch (SceneFormatException e) {
+            return fail(e.getMessage());
+        } catch (IOException e) {
+            return fail(name + ": cannot read the scene: " + e.getMessage());
+        } catch (OutOfMemoryError e) {
+            return fail(name + ": out of memory while reading the scene (raise the heap, e.g. JAVA_OPTS=-Xmx16g)");
+        } catch (Throwable e) {       // a user's class (static initialiser, constructor, setter) or a parser bug
+            return fail(name + ": reading the scene failed: " + Failures.describe(e));
+        }
+        for (String w : warnings) {
+            err.println(w);
+        }
+        try {
+            main.sampling.applyTo(scene);
+            scene.planCutFaint(main.cutFaint);
+            if (!ray.plan.CostGate.check(name, scene, main.allowLong, main.threads, main.quiet, err)) {
+                return false;
+            }
+        } catch (Throwable e) {       // the plan asks the scene's own classes about themselves
+            return fail(name + ": planning the render failed: " + Failures.describe(e));
+        }
+        long t1 = System.nanoTime();
+        Renderer renderer = new Renderer(scene).threads(main.threads);
+        ProgressLine progress = !main.quiet && err == System.err && Terminal.stderr()
+                ? new ProgressLine(err, name, (long) scene.width * scene.height).start() : null;
+        if (progress != null) {
+            renderer.listener(progress);
+        }
+        ExitGuard.working(name, progress);
+        Image image;
+        try {
+            image = renderer.render();
+        } catch (OutOfMemoryError e) {
+            return fail(name + ": out of memory while rendering (raise the heap, e.g. JAVA_OPTS=-Xmx16g)");
+        } catch (Throwable e) {       // e.g. a user's own material failing, whatever it throws
+            return fail(name + ": rendering failed: " + Failures.describe(e));
+        } finally {
+            if (progress != null) {
+                progress.clear();
+            }
+        }
+        long t2 = System.nanoTime();
+        PrintStream summary = out;
+        try {
+            if (target.stdout()) {
+                PngEncoder.write(image, out);
+                out.flush();
+                if (out.checkError()) {
+                    return fail(name + ": cannot write the image to standard output (closed?)");
+                }
+                summary = err;
+            } else {
+                if (!main.quiet && "a FIFO".equals(PngWriter.kind(target.path()))) {
+                    err.println(name + ": writing the image into the FIFO " + target + " (waits until something reads it)");
+                }
+                pending.commit(image);
+                outputs.wrote(scenePath, target.path());
+            }
+        } catch (IOException | RuntimeException e) {
+            return fail(target + ": cannot write the image: " + Failures.message(e));
+        }
+        long t3 = System.nanoTime();
+        // plain concatenation, not printf: java.util.Formatter's first use loads locale data (~20 ms)
+        if (!main.quiet && !main.json) {   // with --json, stdout holds JSON Lines only
+            summary.println(name + " -> " + target + " (" + scene.width + "x" + scene.height + ", " + scene.samplesPerPixel
+                    + "x" + scene.samplesPerPixel + " AA, " + Main.fixed(t3 - t0, 2) + " s, "
+                    + raysPerSecond(renderer.stats().total(), t2 - t1) + " rays/s: " + renderer.stats() + ")");
+            SamplingOptions.report(summary, renderer.summary());
+        }
+        if (main.stats && main.json) {
+            summary.println(StatsJson.line(scenePath, target.stdout() ? Path.of("-") : target.path(), scene, renderer.stats(),
+                    new long[] {t0, t1, t2, t3}));
+        } else if (main.stats) {
+            long build = scene.accelerator() instanceof Bvh b ? b.buildNanos() : 0;
+            String bvh = scene.accelerator() instanceof Bvh b && b.primitiveCount() > 0
+                    ? "; BVH " + Main.fixed(Math.round(1e9 * b.memoryBytes() / b.primitiveCount()), 1) + " bytes/primitive" : "";
+            long peak = Main.peakRssBytes();
+            summary.println("  parse " + Main.fixed(t1 - t0, 3) + " s, build " + Main.fixed(build, 3) + " s, render "
+                    + Main.fixed(t2 - t1 - build, 3) + " s, write " + Main.fixed(t3 - t2, 3) + " s; " + renderer.stats()
+                    + (peak > 0 ? "; peak RSS " + (peak >> 20) + " MiB" : "") + bvh + "; cpu " + Main.fixed(Main.processCpuNanos(), 3) + " s");
+        }
+        if (renderer.stats().invalidSamples > 0) {
+            err.println(name + ": warning: " + renderer.stats().invalidSamples + " samples were NaN or infinite and were left black");
+        }
+        return true;
+    }
+}

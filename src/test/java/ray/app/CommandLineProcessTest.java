@@ -1,0 +1,183 @@
+package ray.app;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.io.File;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.TimeUnit;
+import javax.tools.JavaCompiler;
+import javax.tools.ToolProvider;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * The {@code raytracer} process itself (a child JVM running {@code RayTracer}), for what only a whole
+ * process shows: a user's class calling System.exit, a class missing from the class path, standard
+ * input and output as scene and image, and a display that does not answer. The student classes are
+ * compiled here, as a student would, into a folder of their own.
+ */
+class CommandLineProcessTest {
+
+    @TempDir
+    Path dir;
+
+    record Result(int status, byte[] out, String err) {
+        List<String> errLines() {
+            return err.lines().toList();
+        }
+    }
+
+    private Result raytracer(Path classes, Map<String, String> env, File stdin, String... args) throws Exception {
+        List<String> cmd = new ArrayList<>();
+        cmd.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
+        cmd.add("-cp");
+        cmd.add(System.getProperty("java.class.path") + (classes == null ? "" : File.pathSeparator + classes));
+        cmd.add("-XX:TieredStopAtLevel=1");
+        if (env == null) {
+            cmd.add("-Djava.awt.headless=true");
+        }
+        cmd.add("RayTracer");
+        cmd.addAll(List.of(args));
+        ProcessBuilder pb = new ProcessBuilder(cmd).directory(dir.toFile());
+        if (env != null) {
+            pb.environment().putAll(env);
+        }
+        pb.redirectInput(stdin != null ? ProcessBuilder.Redirect.from(stdin) : ProcessBuilder.Redirect.from(new File("/dev/null")));
+        Path err = dir.resolve("stderr.log");
+        pb.redirectError(err.toFile());
+        Process p = pb.start();
+        byte[] out = p.getInputStream().readAllBytes();
+        assertTrue(p.waitFor(60, TimeUnit.SECONDS), "the process ended");
+        String e = Files.readString(err, StandardCharsets.UTF_8);
+        Files.delete(err);
+        return new Result(p.exitValue(), out, e);
+    }
+
+    /** Compiles student sources (name -> text) into a new folder, as javac would for a student. */
+    private Path compile(Map<String, String> sources) throws IOException {
+        JavaCompiler javac = ToolProvider.getSystemJavaCompiler();
+        assumeTrue(javac != null, "a JDK with javac is needed");
+        Path src = Files.createDirectories(dir.resolve("student-src")), out = Files.createDirectories(dir.resolve("student-classes"));
+        List<String> args = new ArrayList<>(List.of("-d", out.toString(), "-cp", System.getProperty("java.class.path")));
+        for (Map.Entry<String, String> s : sources.entrySet()) {
+            Path f = src.resolve(s.getKey() + ".java");
+            Files.writeString(f, s.getValue());
+            args.add(f.toString());
+        }
+        assertEquals(0, javac.run(null, null, null, args.toArray(new String[0])), "student classes compile");
+        return out;
+    }
+
+    private static final String GOOD = MainBadInputTest.GOOD;
+
+    private static String sceneWith(String material) {
+        return GOOD + "\nMaterial " + material + " m\n\nSurface Sphere\nVector3d center [0 0 0]\nref material m\n";
+    }
+
+    private static final String MATERIAL = """
+            import javax.vecmath.Vector3d;
+            import ray.IntersectionRecord;
+            import ray.Ray;
+            import ray.Scene;
+            import ray.material.Material;
+
+            public class %s extends Material {
+                @Override
+                public Vector3d shade(Ray ray, IntersectionRecord record, Scene scene) {
+                    %s
+                }
+            }
+            """;
+
+    /**
+     * A class that calls System.exit(0) mid-render ends the program, but not with success: status 1 and
+     * one line naming the scene and the calling method. A class whose helper is missing from the class
+     * path (deleted after compiling) fails alone with NoClassDefFoundError; scenes before the exit render.
+     */
+    @Test
+    void systemExitFromAUserClassIsNotASuccess() throws Exception {
+        Path classes = compile(Map.of(
+                "Quitter", MATERIAL.formatted("Quitter", "System.exit(0);\n        return null;"),
+                "UsesHelper", MATERIAL.formatted("UsesHelper", "return Helper.color();"),
+                "Helper", "public class Helper { static javax.vecmath.Vector3d color() { return new javax.vecmath.Vector3d(1, 0, 0); } }"));
+        Files.delete(classes.resolve("Helper.class"));
+        Files.writeString(dir.resolve("helper.txt"), sceneWith("UsesHelper"));
+        Files.writeString(dir.resolve("good.txt"), GOOD);
+        Files.writeString(dir.resolve("quit.txt"), sceneWith("Quitter"));
+        Files.writeString(dir.resolve("after.txt"), GOOD);
+        Files.write(dir.resolve("quit.png"), MainBadInputTest.oldPng());
+        Result r = raytracer(classes, null, null, "-q", "helper.txt", "good.txt", "quit.txt", "after.txt");
+        assertEquals(1, r.status(), r.err());
+        List<String> lines = r.errLines();
+        assertEquals(2, lines.size(), r.err());
+        assertTrue(lines.get(0).startsWith("helper.txt: rendering failed: NoClassDefFoundError (Helper) at UsesHelper.shade("), lines.get(0));
+        assertEquals("quit.txt: Quitter.shade called System.exit while the scene was being rendered; the program stopped there "
+                + "and no image was written", lines.get(1));
+        assertTrue(Files.size(dir.resolve("good.png")) > 0);
+        assertArrayEquals(MainBadInputTest.oldPng(), Files.readAllBytes(dir.resolve("quit.png")), "the old image stays");
+        assertFalse(Files.exists(dir.resolve("helper.png")));
+        try (var s = Files.list(dir)) {
+            assertEquals(List.of(), s.map(p -> p.getFileName().toString()).filter(n -> n.endsWith(".tmp")).toList(), "no temporary file left");
+        }
+    }
+
+    /** '-' reads the scene from standard input and writes the PNG to standard output; the summary goes to stderr. */
+    @Test
+    void dashReadsStdinAndWritesStdout() throws Exception {
+        Path scene = dir.resolve("a.txt");
+        Files.writeString(scene, GOOD);
+        Result r = raytracer(null, null, scene.toFile(), "-");
+        assertEquals(0, r.status(), r.err());
+        assertTrue(r.out().length > 8 && r.out()[0] == (byte) 0x89 && r.out()[1] == 'P', "a PNG on stdout");
+        assertTrue(r.err().startsWith("<stdin> -> <stdout> (4x3, "), r.err());
+    }
+
+    /** A scene named @x.txt (as typed, relative) renders like any other: picocli's argument files are off. */
+    @Test
+    void sceneNamedLikeAnArgumentFileRenders() throws Exception {
+        Files.writeString(dir.resolve("@x.txt"), GOOD);
+        Result r = raytracer(null, null, null, "-q", "--threads=1", "@x.txt");     // read by picocli, not the everyday fast path
+        assertEquals(0, r.status(), r.err());
+        assertEquals("", r.err());
+        assertTrue(Files.size(dir.resolve("@x.png")) > 0);
+        Result fast = raytracer(null, null, null, "@x.txt", "-o", "y.png");
+        assertEquals(0, fast.status(), fast.err());
+        assertTrue(Files.size(dir.resolve("y.png")) > 0);
+    }
+
+    /** /dev/stdin redirected from a file is read, but no PNG is written into /dev. */
+    @Test
+    void devStdinAsTheSceneWritesNothingIntoDev() throws Exception {
+        Path scene = dir.resolve("a.txt");
+        Files.writeString(scene, GOOD);
+        Path devPng = Path.of("/dev/stdin.png");
+        Object before = Files.exists(devPng) ? Files.getLastModifiedTime(devPng) : null;
+        Result r = raytracer(null, null, scene.toFile(), "-q", "/dev/stdin");
+        assertEquals(1, r.status());
+        assertEquals(List.of("/dev/stdin: a PNG beside it would go into /dev; name the image with -o FILE.png, or read the scene "
+                + "from standard input with '-'"), r.errLines());
+        assertEquals(before, Files.exists(devPng) ? Files.getLastModifiedTime(devPng) : null, "nothing written into /dev");
+        Result ok = raytracer(null, null, scene.toFile(), "-q", "/dev/stdin", "-o", "out.png");
+        assertEquals(0, ok.status(), ok.err());
+        assertTrue(Files.size(dir.resolve("out.png")) > 0);
+    }
+
+    /** A DISPLAY nobody answers on: the same one line and status as no display at all, no AWTError trace. */
+    @Test
+    void unreachableDisplayIsOneLine() throws Exception {
+        Result r = raytracer(null, Map.of("DISPLAY", "nohost.invalid:37"), null);
+        assertEquals(2, r.status(), r.err());
+        assertEquals(List.of("raytracer: no display for the viewer (DISPLAY=nohost.invalid:37 does not answer); "
+                + "give scene files to render (see --help)"), r.errLines());
+    }
+}

@@ -1,0 +1,66 @@
+package ray.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import org.junit.jupiter.api.Test;
+
+/** The progress bar's arithmetic and text (the terminal rules themselves: ProgressProcessTest). */
+class ProgressLineTest {
+
+    @Test
+    void shareCountsPixelsNotTiles() {
+        ProgressLine p = new ProgressLine(new PrintStream(new ByteArrayOutputStream()), "s.txt", 100 * 10);
+        p.tileDone(null, 0, 0, 16, 10, 1, 7);        // 160 pixels of 1,000
+        assertEquals(0.16, p.share(), 1e-12);
+        p.tileDone(null, 96, 0, 100, 10, 2, 7);      // an edge tile: 40 more
+        assertEquals(0.20, p.share(), 1e-12);
+    }
+
+    @Test
+    void progressivePassesShareTheWork() {
+        ProgressLine p = new ProgressLine(new PrintStream(new ByteArrayOutputStream()), "s.txt", 100);
+        p.tileDone(null, 0, 0, 10, 5, 1, 2);          // half of pass 0 of 2
+        p.passDone(null, 0, 2);
+        assertEquals(0.5, p.share(), 1e-12);
+        p.tileDone(null, 0, 0, 10, 5, 1, 2);          // half of pass 1
+        assertEquals(0.75, p.share(), 1e-12);
+        p.passDone(null, 1, 2);
+        assertEquals(1.0, p.share(), 1e-12);
+    }
+
+    @Test
+    void lineShowsShareBarElapsedAndTimeLeft() {
+        assertEquals("s.txt  50% [==========>         ] 10.0 s, about 10.0 s left", ProgressLine.line("s.txt", 0.5, 10_000_000_000L));
+        assertEquals("s.txt   0% [>                   ] 0.3 s", ProgressLine.line("s.txt", 0, 300_000_000L));
+        assertEquals("s.txt   1% [>                   ] 0.3 s", ProgressLine.line("s.txt", 0.01, 300_000_000L), "too early to say");
+        assertEquals("s.txt 100% [====================] 2.0 s, about 0.0 s left", ProgressLine.line("s.txt", 1, 2_000_000_000L));
+        assertEquals("s.txt  25% [=====>              ] 1 min 00 s, about 3 min 00 s left", ProgressLine.line("s.txt", 0.25, 60_000_000_000L));
+        assertEquals("2 h 00 min", ProgressLine.duration(7200));
+    }
+
+    @Test
+    void longNamesAreCutToTheTerminalWidth() {
+        String name = "/very/long/path/" + "x".repeat(200) + "/scene.txt";
+        String s = ProgressLine.line(name, 0.5, 10_000_000_000L);
+        assertEquals(ProgressLine.WIDTH, s.length(), s);
+        assertTrue(s.startsWith("...") && s.contains("scene.txt  50%"), s);
+    }
+
+    @Test
+    void clearErasesWhatWasDrawnAndStopsDrawing() {
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+        ProgressLine p = new ProgressLine(new PrintStream(bytes, true, StandardCharsets.UTF_8), "s.txt", 100);
+        assertTrue(p.redraw());
+        String drawn = bytes.toString(StandardCharsets.UTF_8);
+        p.clear();
+        String all = bytes.toString(StandardCharsets.UTF_8);
+        assertEquals(drawn + "\r" + " ".repeat(drawn.length() - 1) + "\r", all);
+        assertFalse(p.redraw(), "nothing is drawn after clear()");
+        assertEquals(all, bytes.toString(StandardCharsets.UTF_8));
+    }
+}
