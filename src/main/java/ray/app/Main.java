@@ -242,7 +242,7 @@ public final class Main implements Callable<Integer> {
                 return 2;
             }
             return ray.study.Study.run(scenes, quick, reportDir != null ? reportDir : Path.of("build", "reports", "accuracy"),
-                    threads, out, err, !this.quiet && System.console() != null);
+                    threads, out, err, !this.quiet && err == System.err && Terminal.stderr());
         }
         if (scenes.isEmpty() || view) {
             return openViewer();
