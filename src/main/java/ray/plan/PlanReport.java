@@ -45,6 +45,7 @@ public final class PlanReport {
         boolean adaptive = "adaptive".equals(s.sampler);
         effects.add(new Effect("camera rays", true, s.width + " x " + s.height + " pixels x " + (adaptive ? "at most " : "") + ns + "x" + ns
                 + " samples (" + s.sampler + " sampler)", RayKind.CAMERA));
+        effects.add(new Effect("geometry", !s.surfaces.isEmpty(), Geometry.describe(s.surfaces), null));
         List<Material> ambient = zero(s.ambientLight) ? List.of() : select(used, true, "ambient"), direct = select(used, true, "direct"),
                 highlight = select(used, true, "highlight"), mirror = select(used, true, "mirror"),
                 refraction = select(used, true, "refraction"), unknown = select(used, true, "unknown");

@@ -27,7 +27,7 @@ final class PlanSummary {
             PlanReport report = new PlanReport("", plan, RenderPlan.derive(scene, RenderPlan.NO_SKIPS));
             List<String> on = new ArrayList<>();
             for (PlanReport.Effect e : report.effects()) {
-                if (e.on && e.kind != ray.RayKind.CAMERA) {
+                if (e.on && e.kind != ray.RayKind.CAMERA && !e.name.equals("geometry")) {
                     on.add(e.name);
                 }
             }
