@@ -27,6 +27,8 @@ public final class Renderer {
     private ProgressListener listener = ProgressListener.NONE;
     private volatile boolean cancelled;
     private RayStats stats = new RayStats();
+    /** The contexts of the render threads running now (empty between passes and once the render is over). */
+    private volatile List<TraceContext> running = List.of();
     private RenderSettings settings = new RenderSettings();
     private RenderSummary summary;
     /** n_s of the render in progress. */
@@ -62,6 +64,19 @@ public final class Renderer {
     /** Rays cast by the last {@link #render()}, by kind. */
     public RayStats stats() {
         return stats;
+    }
+
+    /**
+     * Rays cast so far by the render in progress: the finished passes plus the running threads' own
+     * counters, read without synchronisation (each thread keeps counting while this reads), so a live
+     * figure for a progress display; once {@link #render()} has returned it is {@code stats().total()}.
+     */
+    public long raysSoFar() {
+        long n = stats.total();
+        for (TraceContext c : running) {
+            n += c.stats.total();
+        }
+        return n;
     }
 
     /** How to sample (sampler, n_s, target error, MaxDepth, passes); unset values come from the scene. */
@@ -190,6 +205,7 @@ public final class Renderer {
         for (int t = 0; t < n; t++) {
             TraceContext ctx = new TraceContext(scene.maxDepth);
             contexts.add(ctx);
+            running = List.copyOf(contexts);   // before this thread starts: its rays are seen as they are cast
             // an anonymous class, not a lambda: linking a lambda costs milliseconds at start-up
             Runnable run = new Runnable() {
                 @Override
@@ -231,6 +247,7 @@ public final class Renderer {
                 Thread.currentThread().interrupt();
             }
         }
+        running = List.of();
         for (TraceContext ctx : contexts) {
             stats.add(ctx.stats);
         }

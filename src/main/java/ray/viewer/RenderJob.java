@@ -38,6 +38,12 @@ public final class RenderJob {
         this.file = file;
     }
 
+    /** Rays the render has cast so far (a live figure while it runs), 0 before it starts. */
+    long raysSoFar() {
+        Renderer r = renderer;
+        return r == null ? 0 : r.raysSoFar();
+    }
+
     public Path file() {
         return file;
     }

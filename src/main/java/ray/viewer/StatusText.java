@@ -20,14 +20,16 @@ final class StatusText {
         };
     }
 
-    /** {@code 42% · 1.2 s elapsed · about 1.7 s left · 640x480, 3x3 AA}. */
+    /** {@code 42% · 1.2 s elapsed · about 1.7 s left · 0.61 M rays/s · 640x480, 3x3 AA}. */
     static String rendering(RenderJob job, long nowNanos) {
         var p = job.progress();
         long elapsed = p.elapsedNanos(nowNanos) + job.parseNanos();
         long left = p.remainingNanos(nowNanos);
         String pass = p.passes() > 1 ? "pass " + (p.pass() + 1) + " of " + p.passes() + " · " : "";
+        long rays = job.raysSoFar(), rendering = p.elapsedNanos(nowNanos);
+        String rate = rays > 0 && rendering > 0 ? String.format(Locale.ROOT, " · %.2f M rays/s", rays / (rendering / 1e9) / 1e6) : "";
         return pass + percent(p.fraction()) + " · " + seconds(elapsed) + " elapsed"
-                + (left < 0 ? "" : " · about " + seconds(left) + " left") + " · " + size(job.scene()) + plan(job);
+                + (left < 0 ? "" : " · about " + seconds(left) + " left") + rate + " · " + size(job.scene()) + plan(job);
     }
 
     /** {@code done in 2.31 s (read 0.05 s, render 2.26 s) · 1,234,567 rays, 0.53 M rays/s · 640x480, 3x3 AA}. */
