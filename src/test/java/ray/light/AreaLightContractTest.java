@@ -10,8 +10,10 @@ import org.junit.jupiter.api.Test;
 import ray.Camera;
 import ray.IntersectionRecord;
 import ray.Scene;
+import ray.TraceContext;
 import ray.parse.Parser;
 import ray.parse.SceneFormatException;
+import ray.render.Sampler;
 
 /**
  * What one {@link AreaLight} sample is, exactly: sample k = i + n j (grid sampler, outside a render: the
@@ -132,5 +134,36 @@ class AreaLightContractTest {
         Vector3d got = blocked.lights.get(0).getIntensity(rec, blocked);
         assertTrue(unblocked.epsilonEquals(got, 1e-12), "middle sample blocked: expected " + unblocked + ", got " + got);
         assertTrue(got.x < all.x, "the sphere takes light away");
+    }
+
+    /**
+     * Inside a render each sample draws the next two dimensions of the pixel sample: sample k of a jittered
+     * pixel sample sits at offsets (get(2 + 2k), get(3 + 2k)) of its cell, not at the cell's centre and
+     * not where the previous sample was.
+     */
+    @Test
+    void eachSampleDrawsTheNextTwoDimensionsOfThePixelSample() {
+        int n = 2;
+        AreaLight l = oblique(n);
+        Scene scene = empty();
+        Sampler jittered = Sampler.create("jittered", 4);
+        TraceContext ctx = TraceContext.current(scene);
+        try {
+            ctx.sample.start(jittered, 3, 5, 1);
+            LightSample out = new LightSample();
+            IntersectionRecord rec = at(0.25, -1, 0.75);
+            for (int k = 0; k < n * n; k++) {
+                double u = jittered.get(3, 5, 1, 2 + 2 * k), v = jittered.get(3, 5, 1, 3 + 2 * k);
+                assertTrue(u != 0.5 || v != 0.5, "a jittered draw, not the centre");
+                double s = (k % n + u) / n - 0.5, t = (k / n + v) / n - 0.5;
+                assertTrue(l.sample(rec, scene, k, out));
+                assertEquals(0.5 + 2 * s - 0.75 * t, out.position.x, 1e-14, "sample " + k);
+                assertEquals(4 + 0.25 * s + 0.5 * t, out.position.y, 1e-14, "sample " + k);
+                assertEquals(-1 + 0.5 * s + 1.5 * t, out.position.z, 1e-14, "sample " + k);
+            }
+            assertEquals(2 + 2 * n * n, ctx.sample.dimension(), "two dimensions per sample");
+        } finally {
+            ctx.sample.start(Sampler.create("grid", 1), 0, 0, 0);   // as outside a render
+        }
     }
 }
