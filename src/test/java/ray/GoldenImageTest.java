@@ -15,6 +15,7 @@ import java.util.List;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
 import javax.imageio.ImageIO;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
@@ -27,6 +28,7 @@ import ray.render.Image;
  * go to {@code build/golden/}. The references are only ever written by
  * {@code gradle regenerateReferences}, never by this test.
  */
+@Tag("slow") // end-to-end; left out by gradle mutation -PmutationFast
 class GoldenImageTest {
 
     static final Path SCENES = Paths.get("scenes");

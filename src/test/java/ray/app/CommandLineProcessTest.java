@@ -17,6 +17,7 @@ import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import javax.tools.JavaCompiler;
 import javax.tools.ToolProvider;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -26,6 +27,7 @@ import org.junit.jupiter.api.io.TempDir;
  * input and output as scene and image, and a display that does not answer. The student classes are
  * compiled here, as a student would, into a folder of their own.
  */
+@Tag("slow") // child JVMs; left out by gradle mutation -PmutationFast
 class CommandLineProcessTest {
 
     @TempDir

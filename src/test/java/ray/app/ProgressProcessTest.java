@@ -13,6 +13,7 @@ import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.TimeUnit;
 import javax.vecmath.Vector3d;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import ray.IntersectionRecord;
@@ -25,6 +26,7 @@ import ray.material.Material;
  * on a pseudo-terminal. Progress goes to stderr when stderr is a terminal (even with stdout redirected),
  * never into a redirected stderr, never with --quiet; Ctrl+C leaves the line erased.
  */
+@Tag("slow") // child JVMs; left out by gradle mutation -PmutationFast
 class ProgressProcessTest {
 
     @TempDir

@@ -77,6 +77,32 @@ class LightSampleContractTest {
         assertEquals(25.0 / 25, out.intensity.x, 1e-15);
     }
 
+    /**
+     * Inside the cone a spot light is the point light times cos^e of the angle to its axis, for an axis
+     * given at any length and in general position: I / r^2 (cos t)^e per channel, exactly.
+     */
+    @Test
+    void spotLightSampleIsThePointLightTimesCosineToTheExponent() {
+        SpotLight s = SpotLightTest.spot(new Vector3d(0, 0, 0), new Vector3d(3, 6, 6), 60, 2);   // axis (1, 2, 2) / 3
+        LightSample out = new LightSample();
+        assertTrue(s.sample(at(1, 2, 3), empty(), 0, out));
+        double cos = 11 / (3 * Math.sqrt(14)), f = cos * cos / 14;   // axis . (1, 2, 3) / |(1, 2, 3)|, r^2 = 14
+        assertEquals(25 * f, out.intensity.x, 1e-14);
+        assertEquals(50 * f, out.intensity.y, 1e-14);
+        assertEquals(75 * f, out.intensity.z, 1e-14);
+        // just outside and just inside a 20-degree cone around the same axis, at 1 degree either side
+        SpotLight narrow = SpotLightTest.spot(new Vector3d(0, 0, 0), new Vector3d(3, 6, 6), 20, 0);
+        Vector3d a = new Vector3d(1, 2, 2), side = new Vector3d(2, -1, 0);   // side is perpendicular to the axis
+        a.normalize();
+        side.normalize();
+        for (double deg : new double[] {19, 21}) {
+            double r = Math.toRadians(deg);
+            IntersectionRecord p = at(a.x * Math.cos(r) + side.x * Math.sin(r), a.y * Math.cos(r) + side.y * Math.sin(r),
+                    a.z * Math.cos(r) + side.z * Math.sin(r));
+            assertEquals(deg < 20, narrow.sample(p, empty(), 0, out), deg + " degrees off a 20-degree spot's axis");
+        }
+    }
+
     @Test
     void spotLightValidatesWhatItInheritsAndItsOwnFields() {
         assertThrows(IllegalArgumentException.class,

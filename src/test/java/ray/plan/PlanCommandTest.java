@@ -17,6 +17,7 @@ import java.util.Map;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import ray.app.Main;
@@ -58,6 +59,7 @@ class PlanCommandTest {
     }
 
     /** Done when: --plan and --stats --json tell the truth for every scene in scenes/. */
+    @Tag("slow") // every scene; left out by gradle mutation -PmutationFast
     @Test
     void planAndStatsTellTheTruthForEveryScene() throws IOException {
         List<String> scenes = new ArrayList<>();
