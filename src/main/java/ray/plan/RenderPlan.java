@@ -62,13 +62,16 @@ public final class RenderPlan {
             evaluated.add(l);
         }
         lights = evaluated.toArray(new Light[0]);
-        java.util.ArrayDeque<Surface> parts = new java.util.ArrayDeque<>(scene.surfaces);
-        while (!parts.isEmpty()) {   // a CSG's operands shade its hits with their own materials
-            Surface s = parts.pop();
-            if (s.material != null) {
-                used.computeIfAbsent(s.material, m -> Shading.of(m, this.skips));
-            }
-            parts.addAll(s.operands());
+        // Breadth first: the scene's surfaces in order, then a CSG's operands (which shade its hits with
+        // their own materials). Runs of surfaces sharing a material (a mesh's 100k triangles) cost one
+        // comparison each, not a map lookup: the plan is derived before every render.
+        java.util.ArrayDeque<Surface> parts = new java.util.ArrayDeque<>();
+        Material last = null;
+        for (Surface s : scene.surfaces) {
+            last = use(s, last, parts);
+        }
+        while (!parts.isEmpty()) {
+            last = use(parts.pop(), last, parts);
         }
         materials = new LinkedHashSet<>(used.keySet());
         materials.addAll(scene.materials);
@@ -80,6 +83,23 @@ public final class RenderPlan {
         }
         materials.remove(null);
         bound = RayBound.of(this);
+    }
+
+    /**
+     * Notes how {@code s}'s material shades (unless it is {@code last}, noted just before) and queues its
+     * operands; returns the material to compare the next surface with.
+     */
+    private Material use(Surface s, Material last, java.util.ArrayDeque<Surface> parts) {
+        Material m = s.material;
+        if (m != null && m != last) {
+            used.computeIfAbsent(m, k -> Shading.of(k, skips));
+            last = m;
+        }
+        List<Surface> ops = s.operands();
+        if (!ops.isEmpty()) {
+            parts.addAll(ops);
+        }
+        return last;
     }
 
     /** Derives the plan of {@code scene} (its camera already set up) with the given exact skips. */
