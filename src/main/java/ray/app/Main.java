@@ -80,6 +80,10 @@ public final class Main implements Callable<Integer> {
     @Option(names = "--quick", description = "with --study: a smaller grid of settings (n_s up to 4)")
     boolean quick;
 
+    @Option(names = "--full-size", description = "with --study: render every scene at its own size (default: scenes over "
+            + "200 x 150 pixels are scaled down to that many, same camera)")
+    boolean fullSize;
+
     @Option(names = "--report-dir", paramLabel = "DIR", description = "with --study: where the CSVs, plots and index.html go")
     Path reportDir;
 
@@ -248,7 +252,7 @@ public final class Main implements Callable<Integer> {
                 err.println("raytracer: --study takes scene files and no --output (see --help)");
                 return 2;
             }
-            return ray.study.Study.run(scenes, quick, reportDir != null ? reportDir : Path.of("build", "reports", "accuracy"),
+            return ray.study.Study.run(scenes, quick, fullSize, reportDir != null ? reportDir : Path.of("build", "reports", "accuracy"),
                     threads, out, err, !this.quiet && err == System.err && Terminal.stderr());
         }
         if (scenes.isEmpty() || view) {

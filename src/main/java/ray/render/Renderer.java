@@ -102,22 +102,22 @@ public final class Renderer {
             long t0 = System.nanoTime();
             scene.prepare();
             ns = settings.samples(scene);
-            Sampler sampler = Sampler.create(settings.samplerName(scene), ns);
+            Sampler sampler = Sampler.create(settings.samplerName(scene), ns, settings.seed());
             stats = new RayStats();
             Image image;
             Film film = null;
-            double estimate = Double.NaN;
+            ErrorProbe.Estimate estimate = ErrorProbe.Estimate.NONE;
             if (sampler instanceof GridSampler && !settings.progressive()) {
                 image = renderGrid(sampler);
             } else {
                 SampledRender s = new SampledRender(this, scene, sampler, settings.targetError(scene), settings.progressive());
                 image = s.run();
                 film = s.film();
-                estimate = s.estimatedRmse();
+                estimate = s.estimate();
             }
             double spp = film == null ? ns * ns : (double) film.totalSamples() / ((double) scene.width * scene.height);
             summary = new RenderSummary(sampler.name(), ns, (System.nanoTime() - t0) / 1e9, stats, spp,
-                    estimate, film);
+                    estimate.rmse(), estimate.low(), estimate.high(), estimate.samplesPerPixel(), film);
             return image;
         } finally {
             scene.maxDepth = savedDepth;
