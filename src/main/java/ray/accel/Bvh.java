@@ -73,33 +73,46 @@ public final class Bvh implements Accelerator {
         Map<PrimitiveSet.Type, Integer> typeIds = new IdentityHashMap<>();
         List<PrimitiveSet.Type> types = new ArrayList<>();
         int[] typeOf = new int[bounded.size()];
+        int[] count = new int[4];
+        PrimitiveSet.Type lastType = null;
+        int lastId = -1;
         for (int i = 0; i < typeOf.length; i++) {
             PrimitiveSet.Type t = typeOf(bounded.get(i));
-            Integer id = typeIds.get(t);
-            if (id == null) {
-                id = types.size();
-                typeIds.put(t, id);
-                types.add(t);
+            if (t != lastType) {          // a scene is mostly long runs of one type: one map lookup per run
+                Integer id = typeIds.get(t);
+                if (id == null) {
+                    id = types.size();
+                    typeIds.put(t, id);
+                    types.add(t);
+                    if (id == count.length) {
+                        count = Arrays.copyOf(count, 2 * id);
+                    }
+                }
+                lastType = t;
+                lastId = id;
             }
-            typeOf[i] = id;
+            typeOf[i] = lastId;
+            count[lastId]++;
         }
         int[] order = b.order, leaves = leaves(root, nodeChild);
         groupLeavesByType(order, typeOf, leaves);
         // each set's surfaces in slot order, so a run of slots is a run of indices in its set
-        List<List<Surface>> members = new ArrayList<>();
-        for (int t = 0; t < types.size(); t++) {
-            members.add(new ArrayList<>());
+        Surface[][] members = new Surface[types.size()][];
+        for (int t = 0; t < members.length; t++) {
+            members[t] = new Surface[count[t]];
+            count[t] = 0;
         }
         slotRun = new int[n];
         slotIndex = new int[n];
         for (int i = 0; i < n; i++) {
-            int t = typeOf[order[i]];
-            slotIndex[i] = members.get(t).size();
-            members.get(t).add(bounded.get(order[i]));
+            int p = order[i], t = typeOf[p];
+            int k = count[t]++;
+            slotIndex[i] = k;
+            members[t][k] = bounded.get(p);
         }
         sets = new PrimitiveSet[types.size()];
         for (int t = 0; t < sets.length; t++) {
-            sets[t] = types.get(t).pack(members.get(t));
+            sets[t] = types.get(t).pack(Arrays.asList(members[t]));
             sets[t].id(t);
         }
         for (int leaf : leaves) {
@@ -213,10 +226,18 @@ public final class Bvh implements Accelerator {
     /** This thread's query scratch for this BVH (made on first use, or when the scene was rebuilt). */
     private RayQuery query(TraceContext ctx) {
         Object o = ctx.acceleratorScratch;
-        if (o instanceof RayQuery && ((RayQuery) o).owner == this) {
-            return (RayQuery) o;
+        if (o instanceof RayQuery) {
+            RayQuery q = (RayQuery) o;
+            if (q.owner == this) {
+                return q;
+            }
         }
-        RayQuery q = new RayQuery(this, sets.length + 1);
+        return newQuery(ctx);
+    }
+
+    /** {@link #query}'s first use on a thread (kept out of it so C1 inlines the common path). */
+    private RayQuery newQuery(TraceContext ctx) {
+        RayQuery q = new RayQuery(this, scene, sets.length + 1);
         ctx.acceleratorScratch = q;
         return q;
     }
@@ -234,7 +255,7 @@ public final class Bvh implements Accelerator {
     @Override
     public boolean closestHit(Ray ray, IntersectionRecord rec, TraceContext ctx) {
         RayQuery q = query(ctx);
-        q.start(ray, scene, rec);
+        q.start(ray, rec);
         if (unbounded != null) {
             unbounded.closestHit(0, unbounded.size(), Integer.MAX_VALUE, q);
         }
@@ -318,7 +339,7 @@ public final class Bvh implements Accelerator {
     @Override
     public boolean anyHit(Ray ray, TraceContext ctx) {
         RayQuery q = query(ctx);
-        q.start(ray, scene, q.scratchRecord);
+        q.startAny(ray);
         if (unbounded != null && unbounded.anyHit(0, unbounded.size(), q)) {
             return true;
         }

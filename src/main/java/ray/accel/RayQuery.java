@@ -15,10 +15,10 @@ public final class RayQuery {
     public double ox, oy, oz, dx, dy, dz, tMin, tMax;
     /** The ray itself and the scene, for surfaces tested through their own {@code intersects}. */
     public Ray ray;
-    public Scene scene;
+    public final Scene scene;
     /**
-     * The caller's record (closest-hit queries; a user surface fills it at once) or, for any-hit
-     * queries, {@link #scratchRecord}.
+     * The caller's record (closest-hit queries; a user surface fills it at once). Any-hit queries leave
+     * it alone: a user surface tested for any hit fills {@link #scratchRecord}.
      */
     public IntersectionRecord record;
     public final IntersectionRecord scratchRecord = new IntersectionRecord();
@@ -42,22 +42,28 @@ public final class RayQuery {
     /** Inner nodes visited and primitives tested (counted only with -Dray.bvh.count=true). */
     long nodeVisits, primitiveTests;
 
-    RayQuery(Bvh owner, int sets) {
+    RayQuery(Bvh owner, Scene scene, int sets) {
         this.owner = owner;
+        this.scene = scene;
         this.scratch = new double[Math.max(1, sets) * PrimitiveSet.SCRATCH];
     }
 
-    void start(Ray r, Scene s, IntersectionRecord rec) {
-        ray = r;
-        scene = s;
+    /** Starts a closest-hit query of {@code r}, to be filled into {@code rec}. */
+    void start(Ray r, IntersectionRecord rec) {
+        startAny(r);
         record = rec;
+        hitSet = null;
+        hitSlot = Integer.MAX_VALUE;
+    }
+
+    /** Starts an any-hit query of {@code r} (no record: nothing is filled in, no hit is kept). */
+    void startAny(Ray r) {
+        ray = r;
         ox = r.origin.x; oy = r.origin.y; oz = r.origin.z;
         dx = r.direction.x; dy = r.direction.y; dz = r.direction.z;
         tMin = r.tMin;
         tMax = r.tMax;
         setUp = 0;
-        hitSet = null;
-        hitSlot = Integer.MAX_VALUE;
     }
 
     /**

@@ -80,6 +80,10 @@ public final class Main implements Callable<Integer> {
     @Option(names = "--quick", description = "with --study: a smaller grid of settings (n_s up to 4)")
     boolean quick;
 
+    @Option(names = "--full-size", description = "with --study: render every scene at its own size (default: scenes over "
+            + "200 x 150 pixels are scaled down to that many, same camera)")
+    boolean fullSize;
+
     @Option(names = "--report-dir", paramLabel = "DIR", description = "with --study: where the CSVs, plots and index.html go")
     Path reportDir;
 
@@ -135,7 +139,8 @@ public final class Main implements Callable<Integer> {
     /**
      * The everyday command lines, read without picocli, whose start-up costs about 0.15 s of CPU
      * (it reflects over the annotations of the whole command): scene files, {@code -o/--output PNG},
-     * {@code -j/--threads N}, {@code -q/--quiet} and {@code --stats}, each option at most once, values
+     * {@code -j/--threads N}, {@code -q/--quiet}, {@code --stats} and {@code --json} (what {@code gradle bench}
+     * runs), each option at most once, values
      * as separate words. Returns null for anything else (no arguments, help, version, other options,
      * repeated options, unusual values), which picocli then reads and reports exactly
      * as before.
@@ -161,6 +166,12 @@ public final class Main implements Callable<Integer> {
                             return null;
                         }
                         m.stats = true;
+                    }
+                    case "--json" -> {
+                        if (m.json) {
+                            return null;
+                        }
+                        m.json = true;
                     }
                     case "-o", "--output" -> {
                         if (m.output != null || i + 1 == args.length || !plainWord(args[i + 1])) {
@@ -241,7 +252,7 @@ public final class Main implements Callable<Integer> {
                 err.println("raytracer: --study takes scene files and no --output (see --help)");
                 return 2;
             }
-            return ray.study.Study.run(scenes, quick, reportDir != null ? reportDir : Path.of("build", "reports", "accuracy"),
+            return ray.study.Study.run(scenes, quick, fullSize, reportDir != null ? reportDir : Path.of("build", "reports", "accuracy"),
                     threads, out, err, !this.quiet && err == System.err && Terminal.stderr());
         }
         if (scenes.isEmpty() || view) {

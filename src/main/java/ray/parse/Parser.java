@@ -492,7 +492,10 @@ public final class Parser {
                     firstDegenerateLine = line;
                 }
                 try {
-                    operands.addAll(s.operands());
+                    List<Surface> ops = s.operands();
+                    if (!ops.isEmpty()) {
+                        operands.addAll(ops);
+                    }
                 } catch (RuntimeException | LinkageError e) {
                     throw error(o.getClass().getSimpleName() + ".operands() failed: " + describe(e));
                 }

@@ -62,17 +62,23 @@ public final class RenderPlan {
             evaluated.add(l);
         }
         lights = evaluated.toArray(new Light[0]);
-        java.util.ArrayDeque<Surface> parts = new java.util.ArrayDeque<>(scene.surfaces);
-        while (!parts.isEmpty()) {   // a CSG's operands shade its hits with their own materials
-            Surface s = parts.pop();
-            if (s.material != null) {
-                used.computeIfAbsent(s.material, m -> Shading.of(m, this.skips));
-            }
-            parts.addAll(s.operands());
+        // Breadth first: the scene's surfaces in order, then a CSG's operands (which shade its hits with
+        // their own materials). Runs of surfaces sharing a material (a mesh's 100k triangles) cost one
+        // comparison each, not a map lookup: the plan is derived before every render.
+        java.util.ArrayDeque<Surface> parts = new java.util.ArrayDeque<>();
+        Material last = null;
+        for (Surface s : scene.surfaces) {
+            last = use(s, last, parts);
+        }
+        while (!parts.isEmpty()) {
+            last = use(parts.pop(), last, parts);
         }
         materials = new LinkedHashSet<>(used.keySet());
         materials.addAll(scene.materials);
-        java.util.ArrayDeque<Material> todo = new java.util.ArrayDeque<>(materials);
+        java.util.ArrayDeque<Material> todo = new java.util.ArrayDeque<>();
+        for (Material m : materials) {   // loops, not lambdas, here: the plan is derived at start-up
+            todo.add(m);
+        }
         while (!todo.isEmpty()) {   // the bases a Glazed material shades, declared or not
             if (todo.pop() instanceof GlazedMaterial g && g.base != null && materials.add(g.base)) {
                 todo.push(g.base);
@@ -80,6 +86,25 @@ public final class RenderPlan {
         }
         materials.remove(null);
         bound = RayBound.of(this);
+    }
+
+    /**
+     * Notes how {@code s}'s material shades (unless it is {@code last}, noted just before) and queues its
+     * operands; returns the material to compare the next surface with.
+     */
+    private Material use(Surface s, Material last, java.util.ArrayDeque<Surface> parts) {
+        Material m = s.material;
+        if (m != null && m != last) {
+            if (!used.containsKey(m)) {
+                used.put(m, Shading.of(m, skips));
+            }
+            last = m;
+        }
+        List<Surface> ops = s.operands();
+        for (int i = 0; i < ops.size(); i++) {
+            parts.add(ops.get(i));
+        }
+        return last;
     }
 
     /** Derives the plan of {@code scene} (its camera already set up) with the given exact skips. */

@@ -8,20 +8,42 @@ import ray.TraceContext;
  * Measures how far a finished adaptive image is from the converged one, instead of trusting a model of
  * the grid's error. No formula on a pixel's own samples can know it: a grid is exact on an edge that
  * runs along a row of cell boundaries and off by up to 1 / (2 n_s) on one just beside it, with the same
- * samples. So a few probe pixels are rendered again with more samples (Owen-scrambled Sobol,
- * (1.5 n_s)^2, at least 8 x 8, at most 32 x 32) and the image's mean squared error is estimated from
- * them (Horvitz-Thompson): pixel i is probed with probability p_i proportional to the largest sample
- * variance of its mean in its 3 x 3 neighbourhood plus the mean of those (so every pixel can be
- * picked, the doubtful ones and their neighbours more often),
- * and contributes d_i^2 / p_i, d_i being its clamped difference from its probe. One pixel in 128 is
- * probed (256 to 8,192), picked by systematic sampling in scan order (fixed count, spread over the
- * image: less spread in the estimate than independent draws); the probes cost about one sample per
- * pixel at n_s = 8 and a half at n_s = 4. Nothing depends on threads. The probe's own error (about half
- * the image's at n_s = 8) is counted in, so the estimate leans high.
+ * samples. So a few probe pixels are rendered again, twice, with two independently scrambled sets of
+ * Owen-scrambled Sobol points ({@link #halfSamples} each, about 2 n_s^2), and the image's mean squared
+ * error is estimated from them (Horvitz-Thompson).
+ *
+ * <p><b>Why two sets and a product.</b> With one probe P per pixel, (I - P)^2 estimates d^2 + var(P),
+ * d = I - truth: the probe's own error counts in, and where the image is good (an 8 x 8 budget, or a
+ * scene whose only error is a few edges) it is as large as the error measured, so the estimate came out
+ * up to 1.7x too high. With two independent probes A and B, E[(I - A)(I - B)] = d^2 exactly (each is an
+ * unbiased estimate of the pixel's integral, and their errors are independent), so the probe's noise
+ * adds spread but no bias. (The product equals (I - (A + B) / 2)^2 - (A - B)^2 / 4: the pooled probe's
+ * squared difference minus an unbiased estimate of its own variance.)
+ *
+ * <p><b>Which pixels.</b> Pixel i is probed with probability p_i proportional to the largest
+ * per-sample variance in its 3 x 3 neighbourhood over its own sample count (what its mean's variance
+ * would be had its samples disagreed like its neighbours': a pixel that stopped at 4 samples beside an
+ * edge is where a missed edge hides, and held 40% of the error in some scenes) plus a third of the mean
+ * of those (so every pixel can be picked; three quarters of the probes go where samples disagree), and
+ * contributes (I - A)(I - B) / p_i. About one pixel
+ * in 64 is probed ({@link #probeCount}), picked by systematic sampling in scan order (fixed count,
+ * spread over the image); a pixel whose neighbourhood's samples all agree gets {@link #CALM} samples a
+ * set (nothing varies there, and a feature the image missed shows with few samples too). The
+ * estimate's spread comes with it: a 95% interval from the spread of the probes' contributions (the
+ * with-replacement variance formula, which systematic sampling does not exceed in practice). The probes
+ * cost {@link Estimate#samplesPerPixel}: about 1 sample per pixel at n_s = 4 and 2 at n_s = 8 on
+ * 200 x 150 images, more on smaller ones (at least 512 cheap probes). Nothing depends on threads.
  */
 final class ErrorProbe {
 
-    private static final int SEED = 0xe770be;
+    private static final int SEED_A = 0xe770be, SEED_B = 0x5eb0b1;
+    /** Samples in each set of a probe whose 3 x 3 neighbourhood's samples all agree. */
+    static final int CALM = 16;
+
+    /** What the probes measured: RMSE in 8-bit steps, its 95% interval, and the probes' cost. */
+    record Estimate(double rmse, double low, double high, int probes, double samplesPerPixel) {
+        static final Estimate NONE = new Estimate(Double.NaN, Double.NaN, Double.NaN, 0, 0);
+    }
 
     private final SampledRender render;
     private final Renderer renderer;
@@ -37,38 +59,79 @@ final class ErrorProbe {
         this.image = image;
     }
 
-    /** The estimated RMSE of the clamped image in 8-bit steps; {@code ns} is the render's n_s. */
-    double measure(int ns) {
+    /**
+     * Samples in each of a probe's two sets for a render with n_s = {@code ns}: the power of two nearest
+     * above 2 n_s^2 (at least 16, at most 2,048), so each set alone is at least as good as the pixel it
+     * judges and its prefix is a (0, m, 2)-net.
+     */
+    static int halfSamples(int ns) {
+        int want = Math.max(16, Math.min(2048, 2 * ns * ns));
+        return Integer.highestOneBit(want - 1) << 1;
+    }
+
+    /**
+     * How many pixels to probe: one in 64 (at least 512, at most 16,384) while a probe takes up to 2 x 32
+     * samples, fewer as probes grow dearer (by sqrt(32 / m): one in 128 at n_s = 8), so the cost stays
+     * near 1 to 2 samples per pixel while the spread of the estimate stays within about 25%.
+     */
+    static int probeCount(int pixels, int m) {
+        double f = Math.min(1, Math.sqrt(32.0 / m));
+        return (int) Math.max(Math.min(pixels, 512 * f), Math.min(16384 * f, pixels / 64.0 * f));
+    }
+
+    /** Measures the estimated RMSE of the clamped image; {@code ns} is the render's n_s. */
+    Estimate measure(int ns) {
         int w = scene.width, h = scene.height, pixels = w * h;
-        double[] own = new double[pixels];
+        // per-sample variance: how much the samples disagree, whatever their count
+        double[] disagree = new double[pixels];
         for (int p = 0; p < pixels; p++) {
-            double v = film.varianceOfMean(p % w, p / w);
-            own[p] = v > 0 ? v : 0;
+            int n = film.count(p % w, p / w);
+            double v = film.varianceOfMean(p % w, p / w) * n;
+            disagree[p] = v > 0 ? v : 0;
         }
-        // a pixel beside one whose samples disagree may have missed the same edge: the 3 x 3 maximum
-        double[] weight = SampledRender.neighbourhoodMax(own, w, h);
+        // a pixel beside one whose samples disagree may have missed the same edge with its fewer
+        // samples: the 3 x 3 maximum of the spread over its own count (its error if its samples had
+        // disagreed as much)
+        double[] weight = SampledRender.neighbourhoodMax(disagree, w, h);
+        for (int p = 0; p < pixels; p++) {
+            weight[p] /= film.count(p % w, p / w);
+        }
         double sum = 0;
         for (double v : weight) {
             sum += v;
         }
-        double floor = sum > 0 ? sum / pixels : 1, total = sum + floor * pixels;
-        int probes = Math.max(Math.min(pixels, 256), Math.min(8192, pixels / 128));
+        // a quarter of the probes spread by the floor alone, three quarters by the samples' disagreement
+        double floor = sum > 0 ? sum / pixels / 3 : 1, total = sum + floor * pixels;
+        int m = halfSamples(ns), probes = probeCount(pixels, m);
         // systematic sampling in scan order: a pixel is probed when the running sum of the chances
         // passes a whole number (shifted by one hashed offset); each pixel's chance is its own
         double[] chance = new double[pixels];
-        double offset = Sampler.unit(Sampler.hash(w, h, SEED, 1)), running = 0;
+        double offset = Sampler.unit(Sampler.hash(w, h, SEED_A, 1)), running = 0;
+        int picked = 0;
         for (int p = 0; p < pixels; p++) {
             double c = Math.min(1, probes * (weight[p] + floor) / total);
-            chance[p] = Math.floor(running + offset) < Math.floor(running + c + offset) ? c : 0;
+            if (Math.floor(running + offset) < Math.floor(running + c + offset)) {
+                chance[p] = c;
+                picked++;
+            }
             running += c;
         }
-        int side = Math.min(32, Math.max(8, (3 * ns + 1) / 2));
-        Sampler probe = new SobolSampler(side);
+        // pixels whose neighbourhood's samples all agree are probed with few samples: their probes are
+        // as good (nothing varies) unless a feature was missed, which few samples show as well
+        int side = (int) Math.ceil(Math.sqrt(m));
+        SobolSampler a = new SobolSampler(side, SEED_A, m), b = new SobolSampler(side, SEED_B, m);
+        SobolSampler aCalm = new SobolSampler(4, SEED_A, CALM), bCalm = new SobolSampler(4, SEED_B, CALM);
+        long samples = 0;
+        for (int p = 0; p < pixels; p++) {
+            if (chance[p] > 0) {
+                samples += 2L * (weight[p] > 0 ? m : CALM);
+            }
+        }
         double[] contribution = new double[pixels];
         renderer.runTiles(image, new Renderer.TileWork() {
             @Override
             public Renderer.TileWorker worker(TraceContext ctx) {
-                Vector3d c = new Vector3d();
+                Vector3d c = new Vector3d(), pa = new Vector3d(), pb = new Vector3d();
                 return new Renderer.TileWorker() {
                     @Override
                     public void tile(int x0, int y0, int x1, int y1) {
@@ -76,7 +139,9 @@ final class ErrorProbe {
                             for (int x = x0; x < x1; x++) {
                                 int p = y * w + x;
                                 if (chance[p] > 0) {
-                                    contribution[p] = squaredError(ctx, probe, x, y, c) / chance[p];
+                                    mean(ctx, weight[p] > 0 ? a : aCalm, x, y, c, pa);
+                                    mean(ctx, weight[p] > 0 ? b : bCalm, x, y, c, pb);
+                                    contribution[p] = crossError(x, y, pa, pb) / chance[p];
                                 }
                             }
                         }
@@ -88,23 +153,39 @@ final class ErrorProbe {
         for (double d : contribution) {
             squared += d;
         }
-        return Math.sqrt(squared / pixels);
+        // spread: with-replacement formula over the picked probes, n z_k against the total
+        double spread = 0;
+        for (int p = 0; p < pixels; p++) {
+            if (chance[p] > 0) {
+                double z = picked * contribution[p] - squared;
+                spread += z * z;
+            }
+        }
+        double half = picked > 1 ? 1.96 * Math.sqrt(spread / ((double) picked * (picked - 1))) : Double.POSITIVE_INFINITY;
+        return new Estimate(Math.sqrt(Math.max(0, squared) / pixels), Math.sqrt(Math.max(0, squared - half) / pixels),
+                Math.sqrt(Math.max(0, squared + half) / pixels), picked, (double) samples / pixels);
     }
 
-    /** The squared difference (8-bit steps, mean over r, g, b, clamped) between pixel (x, y) and its probe. */
-    private double squaredError(TraceContext ctx, Sampler probe, int x, int y, Vector3d c) {
+    /** The mean of pixel (x, y)'s samples from {@code probe}, clamped to [0, 1] per channel, into {@code out}. */
+    private void mean(TraceContext ctx, SobolSampler probe, int x, int y, Vector3d c, Vector3d out) {
         double r = 0, g = 0, b = 0;
-        int n = probe.samplesPerPixel();
+        int n = probe.count();
         for (int s = 0; s < n; s++) {
             render.trace(ctx, probe, x, y, s, c);
             r += c.x;
             g += c.y;
             b += c.z;
         }
+        out.set(Film.clamp(r / n), Film.clamp(g / n), Film.clamp(b / n));
+    }
+
+    /**
+     * (I - A)(I - B) for pixel (x, y) of the image I against probes A and B (clamped; mean over r, g, b;
+     * 8-bit steps squared): an unbiased estimate of the pixel's squared error, possibly negative.
+     */
+    private double crossError(int x, int y, Vector3d a, Vector3d b) {
         int i = 3 * (y * image.width + x);
-        double dr = Film.clamp(image.rgb[i]) - Film.clamp(r / n);
-        double dg = Film.clamp(image.rgb[i + 1]) - Film.clamp(g / n);
-        double db = Film.clamp(image.rgb[i + 2]) - Film.clamp(b / n);
-        return (dr * dr + dg * dg + db * db) / 3 * 255 * 255;
+        double r = Film.clamp(image.rgb[i]), g = Film.clamp(image.rgb[i + 1]), bl = Film.clamp(image.rgb[i + 2]);
+        return ((r - a.x) * (r - b.x) + (g - a.y) * (g - b.y) + (bl - a.z) * (bl - b.z)) / 3 * 255 * 255;
     }
 }

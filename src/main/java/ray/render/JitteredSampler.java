@@ -12,16 +12,24 @@ public final class JitteredSampler extends Sampler {
 
     private static final int SEED = 0x6a177e4d;
 
+    private final int seed;
+
     public JitteredSampler(int n) {
+        this(n, 0);
+    }
+
+    /** Another independent jittering for each {@code seed} (0 is the default's). */
+    public JitteredSampler(int n, int seed) {
         super(n);
+        this.seed = SEED ^ seed;
     }
 
     @Override
     public double get(int x, int y, int index, int dim) {
         int pair = dim >>> 1;
-        int cell = pair == 0 ? index : permute(index, n * n, (int) hash(x, y, pair, SEED));
+        int cell = pair == 0 ? index : permute(index, n * n, (int) hash(x, y, pair, seed));
         int stratum = (dim & 1) == 0 ? cell % n : cell / n;
-        double jitter = unit(hash(x, y, index, dim ^ SEED));
+        double jitter = unit(hash(x, y, index, dim ^ seed));
         return Math.min((stratum + jitter) / n, Math.nextDown(1.0));
     }
 

@@ -23,6 +23,7 @@ public final class RenderSettings {
     private double targetError = Double.NaN;
     private int maxDepth = -1;
     private boolean progressive;
+    private int seed;
 
     /** One of {@link Sampler#NAMES}. */
     public RenderSettings sampler(String name) {
@@ -64,6 +65,19 @@ public final class RenderSettings {
     public RenderSettings progressive(boolean p) {
         progressive = p;
         return this;
+    }
+
+    /**
+     * The random seed of the {@code jittered} and {@code sobol} samplers (default 0): another seed gives
+     * an independent image of the same scene, as an unbiased check of an image's noise needs.
+     */
+    public RenderSettings seed(int s) {
+        seed = s;
+        return this;
+    }
+
+    public int seed() {
+        return seed;
     }
 
     public String samplerName(Scene scene) {

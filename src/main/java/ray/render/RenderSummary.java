@@ -22,25 +22,44 @@ public final class RenderSummary {
      * 8-bit steps, measured at probe pixels ({@code ErrorProbe}); NaN for the other samplers.
      */
     public final double estimatedRmse;
+    /**
+     * The approximate 95% interval of {@link #estimatedRmse} (8-bit steps; NaN without an estimate):
+     * the probes are a sample of the pixels, so the estimate has a spread of its own, reported with it.
+     */
+    public final double estimatedRmseLow, estimatedRmseHigh;
+    /** What the estimate cost: the probes' samples over the image's pixels (not in {@link #meanSamplesPerPixel}). */
+    public final double probeSamplesPerPixel;
     /** The film (null for the grid's fast path, which keeps no film). */
     public final Film film;
 
     RenderSummary(String sampler, int samplesPerSide, double seconds, RayStats stats, double meanSamplesPerPixel,
-                  double estimatedRmse, Film film) {
+                  double estimatedRmse, double estimatedRmseLow, double estimatedRmseHigh, double probeSamplesPerPixel,
+                  Film film) {
         this.sampler = sampler;
         this.samplesPerSide = samplesPerSide;
         this.seconds = seconds;
         this.stats = stats;
         this.meanSamplesPerPixel = meanSamplesPerPixel;
         this.estimatedRmse = estimatedRmse;
+        this.estimatedRmseLow = estimatedRmseLow;
+        this.estimatedRmseHigh = estimatedRmseHigh;
+        this.probeSamplesPerPixel = probeSamplesPerPixel;
         this.film = film;
     }
 
-    /** One line for the render summary, e.g. {@code adaptive: 5.3 samples per pixel, estimated error 0.41 (8-bit steps RMSE)}. */
+    /**
+     * One line for the render summary, e.g. {@code adaptive: 5.3 samples per pixel, estimated error 0.41
+     * (RMSE in 8-bit steps; 95% interval 0.35 to 0.47, measured with 0.5 more samples per pixel)}.
+     */
     public String line() {
         String spp = String.valueOf(Math.round(meanSamplesPerPixel * 10) / 10.0);
         return sampler + ": " + spp + " samples per pixel"
-                + (Double.isNaN(estimatedRmse) ? "" : ", estimated error " + Math.round(estimatedRmse * 100) / 100.0
-                + " (RMSE in 8-bit steps)");
+                + (Double.isNaN(estimatedRmse) ? "" : ", estimated error " + round2(estimatedRmse)
+                + " (RMSE in 8-bit steps; 95% interval " + round2(estimatedRmseLow) + " to " + round2(estimatedRmseHigh)
+                + ", measured with " + Math.round(probeSamplesPerPixel * 10) / 10.0 + " more samples per pixel)");
+    }
+
+    private static double round2(double v) {
+        return Math.round(v * 100) / 100.0;
     }
 }

@@ -26,7 +26,7 @@ final class SampledRender {
     private final boolean progressive;
     private final Film film;
     private final Image image;
-    private double estimatedRmse = Double.NaN;
+    private ErrorProbe.Estimate estimate = ErrorProbe.Estimate.NONE;
 
     SampledRender(Renderer renderer, Scene scene, Sampler sampler, double targetError, boolean progressive) {
         this.renderer = renderer;
@@ -42,9 +42,9 @@ final class SampledRender {
         return film;
     }
 
-    /** The adaptive render's measured estimate of its RMSE in 8-bit steps (NaN for the other samplers). */
-    double estimatedRmse() {
-        return estimatedRmse;
+    /** The adaptive render's measured estimate of its RMSE in 8-bit steps ({@code NONE} for the other samplers). */
+    ErrorProbe.Estimate estimate() {
+        return estimate;
     }
 
     Image run() {
@@ -55,7 +55,7 @@ final class SampledRender {
             double[] first = new double[3 * b0 * scene.width * scene.height];
             pass(new FirstBatch(a, first), 0, 2);
             pass(new Adaptive(a, first, nudgedPixels()), 1, 2);
-            estimatedRmse = new ErrorProbe(this, renderer, scene, film, image).measure(a.side());
+            estimate = new ErrorProbe(this, renderer, scene, film, image).measure(a.side());
             return image;
         }
         int[] bounds = progressive ? passBounds(all) : new int[] {0, all};

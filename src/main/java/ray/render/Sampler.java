@@ -32,10 +32,20 @@ public abstract class Sampler {
 
     /** The sampler called {@code name} (one of {@link #NAMES}) with n_s x n_s samples per pixel. */
     public static Sampler create(String name, int ns) {
+        return create(name, ns, 0);
+    }
+
+    /**
+     * {@link #create(String, int)} with another random {@code seed} for the randomised samplers
+     * ({@code jittered}, {@code sobol}: seed 0 is their default; independent seeds give independent
+     * images, as the accuracy study's two references need); {@code grid} and {@code adaptive} have no
+     * randomness and ignore it.
+     */
+    public static Sampler create(String name, int ns, int seed) {
         return switch (name) {
             case "grid" -> new GridSampler(ns);
-            case "jittered" -> new JitteredSampler(ns);
-            case "sobol" -> new SobolSampler(ns);
+            case "jittered" -> new JitteredSampler(ns, seed);
+            case "sobol" -> new SobolSampler(ns, seed);
             case "adaptive" -> new AdaptiveSampler(ns);
             default -> throw new IllegalArgumentException("unknown sampler '" + name + "' (expected one of "
                     + String.join(", ", NAMES) + ")");

@@ -17,17 +17,43 @@ public final class SobolSampler extends Sampler {
 
     private static final int SEED = 0x50b01;
 
+    private final int seed;
+    private final int count;
+
     public SobolSampler(int n) {
+        this(n, 0);
+    }
+
+    /** Another independent scrambling for each {@code seed} (0 is the default's). */
+    public SobolSampler(int n, int seed) {
+        this(n, SEED ^ seed, n * n);
+    }
+
+    /**
+     * An independent scrambling ({@code seed}) of the first {@code count} points (at most n x n; a power
+     * of two keeps the prefix a (0, m, 2)-net), for estimates that need two independent sets of points.
+     */
+    SobolSampler(int n, int seed, int count) {
         super(n);
+        if (count < 1 || count > n * n) {
+            throw new IllegalArgumentException("count must be 1 to " + n * n + ", got " + count);
+        }
+        this.seed = seed;
+        this.count = count;
+    }
+
+    /** How many of the n x n points this sampler hands out (all of them unless made for a probe). */
+    int count() {
+        return count;
     }
 
     @Override
     public double get(int x, int y, int index, int dim) {
         int pair = dim >>> 1;
-        int i = pair == 0 ? index : permute(index, n * n, (int) hash(x, y, pair, SEED));
-        int seed = (int) hash(x, y, dim, SEED ^ 0x5eed);
+        int i = pair == 0 ? index : permute(index, count, (int) hash(x, y, pair, seed));
+        int scramble = (int) hash(x, y, dim, seed ^ 0x5eed);
         int v = (dim & 1) == 0 ? Integer.reverse(i) : sobolSecond(i);
-        return Integer.toUnsignedLong(owenScramble(v, seed)) * 0x1.0p-32;
+        return Integer.toUnsignedLong(owenScramble(v, scramble)) * 0x1.0p-32;
     }
 
     /** Dimension 1 of the Sobol sequence (generator matrix: Pascal's triangle mod 2), as a 32-bit fraction. */

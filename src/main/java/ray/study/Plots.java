@@ -69,7 +69,7 @@ final class Plots {
     /** The adaptive sampler's own error estimate against its true RMSE, all scenes in one plot. */
     static boolean honesty(List<SceneStudy.Outcome> outcomes, Path png) throws IOException {
         XYChart c = new XYChartBuilder().width(760).height(520).title("adaptive: estimated against true image error")
-                .xAxisTitle("true RMSE against the reference (8-bit steps)").yAxisTitle("estimated RMSE (8-bit steps)").build();
+                .xAxisTitle("true RMSE (against the reference, its own noise taken out; 8-bit steps)").yAxisTitle("estimated RMSE (8-bit steps)").build();
         c.getStyler().setXAxisLogarithmic(true).setYAxisLogarithmic(true).setLegendPosition(Styler.LegendPosition.OutsideE)
                 .setChartBackgroundColor(Color.WHITE).setMarkerSize(7);
         c.getStyler().setDefaultSeriesRenderStyle(XYSeries.XYSeriesRenderStyle.Scatter);
@@ -78,10 +78,11 @@ final class Plots {
         for (SceneStudy.Outcome o : outcomes) {
             List<double[]> pts = new ArrayList<>();
             for (Row r : o.rows()) {
-                if (!Double.isNaN(r.estimatedRmseSteps()) && r.rmseSteps() > 0 && r.estimatedRmseSteps() > 0) {
-                    pts.add(new double[] {r.rmseSteps(), r.estimatedRmseSteps()});
-                    lo = Math.min(lo, Math.min(r.rmseSteps(), r.estimatedRmseSteps()));
-                    hi = Math.max(hi, Math.max(r.rmseSteps(), r.estimatedRmseSteps()));
+                double truth = o.ref().trueSteps(r.rmseSteps());
+                if (!Double.isNaN(r.estimatedRmseSteps()) && truth > 0 && r.estimatedRmseSteps() > 0) {
+                    pts.add(new double[] {truth, r.estimatedRmseSteps()});
+                    lo = Math.min(lo, Math.min(truth, r.estimatedRmseSteps()));
+                    hi = Math.max(hi, Math.max(truth, r.estimatedRmseSteps()));
                 }
             }
             if (!pts.isEmpty()) {

@@ -24,14 +24,15 @@ final class RendererAdapter implements StudyRenderer {
 
     @Override
     public Result render(Scene scene, Setting s) {
-        RenderSettings settings = new RenderSettings().sampler(s.sampler()).samples(s.ns()).maxDepth(s.maxDepth());
+        RenderSettings settings = new RenderSettings().sampler(s.sampler()).samples(s.ns()).maxDepth(s.maxDepth()).seed(s.seed());
         if (s.sampler().equals("adaptive")) {
             settings.targetError(s.targetError());
         }
         Renderer r = new Renderer(scene).settings(settings).threads(threads);
         Image image = r.render();
         RenderSummary sum = r.summary();
-        return new Result(image, sum.seconds, sum.stats, s.sampler().equals("adaptive") ? sum.estimatedRmse : Double.NaN,
-                sum.meanSamplesPerPixel);
+        boolean adaptive = s.sampler().equals("adaptive");
+        return new Result(image, sum.seconds, sum.stats, sum.meanSamplesPerPixel, adaptive
+                ? new Estimate(sum.estimatedRmse, sum.estimatedRmseLow, sum.estimatedRmseHigh, sum.probeSamplesPerPixel) : Estimate.NONE);
     }
 }

@@ -4,23 +4,32 @@ import java.util.Locale;
 
 /** One line of a scene's CSV: a setting, its time over the repeats, its rays and its error. */
 public record Row(Setting setting, double secondsMedian, double secondsMin, double secondsMax, long rays,
-        ImageError error, double estimatedRmseSteps, double meanSpp) {
+        ImageError error, StudyRenderer.Estimate estimate, double meanSpp) {
 
-    /** The CSV header; the columns the issue fixes come first, then the adaptive sampler's own. */
+    /**
+     * The CSV header; the columns the issue fixes come first, then the adaptive sampler's own estimate
+     * (its 95% interval, and what measuring it cost in samples per pixel, not counted in {@code spp}).
+     */
     public static final String HEADER = "sampler,setting,spp,seconds_median,seconds_min,seconds_max,rays,rmse,psnr_db,"
-            + "max_error,share_off_by_more_than_one,estimated_rmse,max_depth";
+            + "max_error,share_off_by_more_than_one,estimated_rmse,max_depth,estimated_rmse_low,estimated_rmse_high,estimate_spp";
 
     /** The true RMSE in 8-bit steps (the unit of --target-error and of the adaptive estimate). */
     public double rmseSteps() {
         return error.rmse / ImageError.STEP;
     }
 
+    /** The render's estimate of its own RMSE in 8-bit steps; NaN where the sampler makes none. */
+    public double estimatedRmseSteps() {
+        return estimate.rmseSteps();
+    }
+
     public String csv() {
+        boolean none = Double.isNaN(estimate.rmseSteps());
         return String.join(",", setting.sampler(), quote(setting.label()), num(meanSpp), num(secondsMedian), num(secondsMin),
                 num(secondsMax), Long.toString(rays), num(error.rmse), num(error.psnrDb), num(error.maxError),
-                num(error.shareOffByMoreThanOneStep),
-                Double.isNaN(estimatedRmseSteps) ? "" : num(estimatedRmseSteps * ImageError.STEP),
-                Integer.toString(setting.maxDepth()));
+                num(error.shareOffByMoreThanOneStep), none ? "" : num(estimate.rmseSteps() * ImageError.STEP),
+                Integer.toString(setting.maxDepth()), none ? "" : num(estimate.lowSteps() * ImageError.STEP),
+                none ? "" : num(estimate.highSteps() * ImageError.STEP), none ? "" : num(estimate.samplesPerPixel()));
     }
 
     static String num(double v) {

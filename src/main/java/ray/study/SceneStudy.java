@@ -7,14 +7,17 @@ import ray.Scene;
 import ray.render.Image;
 
 /**
- * The study of one scene: a converged reference, then every setting rendered {@code repeats} times
- * (after a warm-up render) and compared with it.
+ * The study of one scene: every setting rendered {@code repeats} times (after a warm-up render), then a
+ * converged {@link Reference} good enough to judge them, then each compared with it.
  */
 final class SceneStudy {
 
-    /** What the study of one scene found. */
-    record Outcome(String name, Scene scene, Image reference, Image halfReference, ImageError referenceChange,
-            int referenceNs, String referenceSampler, List<Row> rows, List<Image> images) {
+    /** What the study of one scene found; {@code fullWidth} x {@code fullHeight} is the scene's own size. */
+    record Outcome(String name, Scene scene, int fullWidth, int fullHeight, Reference ref, List<Row> rows, List<Image> images) {
+
+        Image reference() {
+            return ref.image();
+        }
     }
 
     /** Told after each render, with the samples per pixel it spent (for the progress bar). */
@@ -32,10 +35,9 @@ final class SceneStudy {
         this.repeats = repeats;
     }
 
-    Outcome run(String name, Scene scene, Tick tick) {
+    /** Studies {@code scene} (already fitted to the study's size); {@code fullWidth} x {@code fullHeight} is its own. */
+    Outcome run(String name, Scene scene, int fullWidth, int fullHeight, Tick tick) {
         double pixels = (double) scene.width * scene.height;
-        String refSampler = settings.referenceSampler(renderer.samplers());
-        int refNs = settings.referenceNs();
         // warm-up: the JIT compiles the render path before anything is timed
         Setting warm = new Setting("grid", "warm-up", 1, 0, scene.maxDepth);
         renderer.render(scene, warm);
@@ -44,14 +46,11 @@ final class SceneStudy {
         tick.rendered(pixels);
         boolean mirrors = probe.rays().get(ray.RayKind.MIRROR) + probe.rays().get(ray.RayKind.REFRACTION) > 0;
 
-        Image half = renderer.render(scene, new Setting(refSampler, "reference/2", refNs / 2, 0, scene.maxDepth)).image();
-        tick.rendered(pixels * (refNs / 2) * (refNs / 2));
-        Image reference = renderer.render(scene, new Setting(refSampler, "reference", refNs, 0, scene.maxDepth)).image();
-        tick.rendered(pixels * refNs * refNs);
-
-        List<Row> rows = new ArrayList<>();
+        List<Setting> list = settings.settings(renderer.samplers(), scene.maxDepth, mirrors);
+        List<StudyRenderer.Result> firsts = new ArrayList<>();
+        List<double[]> times = new ArrayList<>();
         List<Image> images = new ArrayList<>();
-        for (Setting s : settings.settings(renderer.samplers(), scene.maxDepth, mirrors)) {
+        for (Setting s : list) {
             double[] seconds = new double[repeats];
             StudyRenderer.Result first = null;
             for (int r = 0; r < repeats; r++) {
@@ -63,18 +62,30 @@ final class SceneStudy {
                 }
             }
             Arrays.sort(seconds);
-            rows.add(new Row(s, median(seconds), seconds[0], seconds[repeats - 1], first.rays().total(),
-                    ImageError.of(first.image(), reference), first.estimatedRmseSteps(), first.meanSpp()));
+            firsts.add(first);
+            times.add(seconds);
             images.add(first.image());
         }
-        return new Outcome(name, scene, reference, half, ImageError.of(half, reference), refNs, refSampler, rows, images);
+        // the reference after the settings: it goes on until its noise is small beside their errors
+        Reference ref = Reference.build(renderer, scene, settings.referenceStartNs(), settings.referenceNs(), images, tick);
+        List<Row> rows = new ArrayList<>();
+        for (int i = 0; i < list.size(); i++) {
+            StudyRenderer.Result first = firsts.get(i);
+            double[] seconds = times.get(i);
+            rows.add(new Row(list.get(i), median(seconds), seconds[0], seconds[repeats - 1], first.rays().total(),
+                    ImageError.of(first.image(), ref.image()), first.estimate(), first.meanSpp()));
+        }
+        return new Outcome(name, scene, fullWidth, fullHeight, ref, rows, images);
     }
 
-    /** Work of {@link #run} in samples x pixels, for the progress bar (adaptive counted at its budget). */
+    /**
+     * Work of {@link #run} in samples x pixels, for the progress bar (adaptive counted at its budget, the
+     * reference at its first level).
+     */
     double work(Scene scene) {
         double pixels = (double) scene.width * scene.height;
-        int refNs = settings.referenceNs();
-        double w = 2 + refNs * refNs + (refNs / 2) * (refNs / 2);
+        int refNs = settings.referenceStartNs();
+        double w = 2 + 2 * refNs * refNs;
         for (Setting s : settings.settings(renderer.samplers(), scene.maxDepth, scene.maxDepth > 0)) {
             w += repeats * s.budget();
         }

@@ -2,9 +2,14 @@ package ray.study;
 
 /**
  * One point of the study: a sampler at a sample budget (n_s x n_s samples per pixel at most), with a
- * target error for {@code adaptive} (8-bit steps; 0 elsewhere) and the MaxDepth to render with.
+ * target error for {@code adaptive} (8-bit steps; 0 elsewhere), the MaxDepth to render with, and the
+ * randomised samplers' seed (0 for the settings studied; the reference's two halves use 1 and 2).
  */
-public record Setting(String sampler, String label, int ns, double targetError, int maxDepth) {
+public record Setting(String sampler, String label, int ns, double targetError, int maxDepth, int seed) {
+
+    public Setting(String sampler, String label, int ns, double targetError, int maxDepth) {
+        this(sampler, label, ns, targetError, maxDepth, 0);
+    }
 
     /** Samples per pixel of a non-adaptive render (adaptive spends at most this many). */
     public int budget() {

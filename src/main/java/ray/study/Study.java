@@ -25,6 +25,7 @@ public final class Study {
     private final PrintStream out;
     private final PrintStream err;
     private final boolean progress;
+    private int maxPixels = StudySettings.MAX_PIXELS;
 
     public Study(StudyRenderer renderer, StudySettings settings, int repeats, PrintStream out, PrintStream err, boolean progress) {
         if (repeats < 1) {
@@ -38,10 +39,27 @@ public final class Study {
         this.progress = progress;
     }
 
-    /** The study as the command line runs it: the built-in renderer on {@code threads} threads, 3 repeats. */
-    public static int run(List<Path> scenes, boolean quick, Path outDir, int threads, PrintStream out, PrintStream err, boolean progress) {
-        return new Study(new RendererAdapter(threads), quick ? StudySettings.QUICK : StudySettings.FULL, 3, out, err, progress)
-                .run(scenes, outDir, quick ? "quick settings" : "full settings");
+    /**
+     * The study as the command line runs it: the built-in renderer on {@code threads} threads, 3 repeats,
+     * each scene at most {@link StudySettings#MAX_PIXELS} pixels unless {@code fullSize}.
+     */
+    public static int run(List<Path> scenes, boolean quick, boolean fullSize, Path outDir, int threads, PrintStream out,
+                          PrintStream err, boolean progress) {
+        Study s = new Study(new RendererAdapter(threads), quick ? StudySettings.QUICK : StudySettings.FULL, 3, out, err, progress);
+        if (fullSize) {
+            s.maxPixels(Integer.MAX_VALUE);
+        }
+        return s.run(scenes, outDir, (quick ? "quick settings" : "full settings")
+                + (fullSize ? ", every scene at its own size" : ", scenes over " + StudySettings.MAX_PIXELS + " pixels scaled down to that many"));
+    }
+
+    /** Renders scenes with more pixels than {@code n} at n pixels (same camera and aspect ratio). */
+    public Study maxPixels(int n) {
+        if (n < 1) {
+            throw new IllegalArgumentException("maxPixels must be at least 1");
+        }
+        maxPixels = n;
+        return this;
     }
 
     /** Returns 0 when every scene was studied, 1 when any could not be read or rendered. */
@@ -55,10 +73,16 @@ public final class Study {
         }
         List<String> names = new ArrayList<>();
         List<Scene> scenes = new ArrayList<>();
+        List<int[]> sizes = new ArrayList<>();
+        List<Path> parsed = new ArrayList<>();
         int failed = 0;
         for (Path p : scenePaths) {
             try {
-                scenes.add(Parser.parse(p));
+                Scene scene = Parser.parse(p);
+                sizes.add(new int[] {scene.width, scene.height});
+                StudySettings.fit(scene, maxPixels);
+                scenes.add(scene);
+                parsed.add(p);
                 String n = p.getFileName().toString();
                 names.add(n.endsWith(".txt") ? n.substring(0, n.length() - 4) : n);
             } catch (SceneFormatException e) {
@@ -77,7 +101,7 @@ public final class Study {
             String name = names.get(i);
             bar.label = name;
             try {
-                SceneStudy.Outcome o = study.run(name, scenes.get(i), bar::advance);
+                SceneStudy.Outcome o = study.run(name, scenes.get(i), sizes.get(i)[0], sizes.get(i)[1], bar::advance);
                 outcomes.add(o);
                 Report.csv(o, outDir.resolve(name + ".csv"));
                 Plots.errorVersusTime(o, outDir.resolve(name + "-error-vs-time.png"));
@@ -88,7 +112,7 @@ public final class Study {
                 failed++;
             } catch (RuntimeException | StackOverflowError e) {
                 bar.clear();
-                err.println(scenePaths.get(i) + ": rendering failed: " + e);
+                err.println(parsed.get(i) + ": rendering failed: " + e);
                 failed++;
             }
         }

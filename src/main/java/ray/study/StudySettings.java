@@ -2,41 +2,67 @@ package ray.study;
 
 import java.util.ArrayList;
 import java.util.List;
+import ray.Scene;
 
 /**
  * The grid of settings the study renders. Full: {@code grid} at n_s = 1..8, every other
  * non-adaptive sampler at the same sample counts, {@code adaptive} at four targets with the n_s = 8
- * budget, and MaxDepth 0..min(MaxDepth - 1, 5) at n_s = 4 for scenes with mirrors; the reference at
- * n_s = 24 (576 samples per pixel, 9x the most studied) and its check at n_s = 12. Quick: n_s = 1..4,
- * two adaptive targets, the reference at n_s = 16 and its check at 8.
+ * budget, and MaxDepth 0..min(MaxDepth - 1, 5) at n_s = 4 for scenes with mirrors; the reference from
+ * two halves of n_s = 16 (512 samples per pixel, 8x the most studied), doubling n_s up to 32 while its
+ * noise is not small beside the errors it judges ({@link Reference}). Quick: n_s = 1..4, two adaptive
+ * targets, the reference from n_s = 8 (128 samples per pixel) up to 16.
  */
 public final class StudySettings {
 
-    public static final StudySettings FULL = new StudySettings(8, new double[] {4, 2, 1, 0.5}, 24, 4);
-    public static final StudySettings QUICK = new StudySettings(4, new double[] {2, 1}, 16, 2);
+    public static final StudySettings FULL = new StudySettings(8, new double[] {4, 2, 1, 0.5}, 16, 32, 4);
+    public static final StudySettings QUICK = new StudySettings(4, new double[] {2, 1}, 8, 16, 2);
+
+    /**
+     * The study renders a scene with more pixels than this at this many (200 x 150), same camera and
+     * aspect ratio, unless asked for full size: errors are per pixel, so they keep their meaning, and a
+     * 640 x 480 scene no longer costs ten times a small one.
+     */
+    public static final int MAX_PIXELS = 200 * 150;
 
     private final int maxNs;
     private final double[] targets;
+    private final int referenceStartNs;
     private final int referenceNs;
     private final int depthNs;
 
-    StudySettings(int maxNs, double[] targets, int referenceNs, int depthNs) {
+    StudySettings(int maxNs, double[] targets, int referenceStartNs, int referenceNs, int depthNs) {
         this.maxNs = maxNs;
         this.targets = targets.clone();
+        this.referenceStartNs = referenceStartNs;
         this.referenceNs = referenceNs;
         this.depthNs = depthNs;
     }
 
+    /** n_s of each half of the reference's first level. */
+    public int referenceStartNs() {
+        return referenceStartNs;
+    }
+
+    /** The largest n_s of each half of the reference. */
     public int referenceNs() {
         return referenceNs;
     }
 
     /**
-     * The reference's sampler: a randomised one where the renderer has it (its error is noise that
-     * shrinks with the samples, with no pattern shared with the grids studied), else the grid.
+     * Shrinks {@code scene} to at most {@code maxPixels} pixels, keeping its aspect ratio and its camera
+     * (the camera's image-plane aspect is fixed to the scene's own before the size changes).
      */
-    String referenceSampler(List<String> samplers) {
-        return samplers.contains("jittered") ? "jittered" : "grid";
+    static void fit(Scene scene, int maxPixels) {
+        long pixels = (long) scene.width * scene.height;
+        if (pixels <= maxPixels) {
+            return;
+        }
+        if (scene.camera != null && Double.isNaN(scene.camera.aspect)) {
+            scene.camera.aspect = (double) scene.width / scene.height;
+        }
+        double s = Math.sqrt((double) maxPixels / pixels);
+        scene.width = Math.max(1, (int) Math.round(scene.width * s));
+        scene.height = Math.max(1, (int) Math.round(scene.height * s));
     }
 
     List<Setting> settings(List<String> samplers, int sceneMaxDepth, boolean mirrors) {

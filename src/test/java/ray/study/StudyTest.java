@@ -58,7 +58,7 @@ class StudyTest {
         Files.writeString(scene, TINY);
         Path report = dir.resolve("report");
         ByteArrayOutputStream out = new ByteArrayOutputStream(), err = new ByteArrayOutputStream();
-        StudySettings small = new StudySettings(4, new double[] {2, 1}, 16, 2);
+        StudySettings small = new StudySettings(4, new double[] {2, 1}, 8, 16, 2);
         int status = new Study(new RendererAdapter(2), small, 3, new PrintStream(out, true, StandardCharsets.UTF_8),
                 new PrintStream(err, true, StandardCharsets.UTF_8), false).run(List.of(scene), report, "test");
         assertEquals(0, status, err.toString(StandardCharsets.UTF_8));
@@ -95,7 +95,7 @@ class StudyTest {
         Files.writeString(good, TINY);
         Files.writeString(bad, "Width -3\n");
         ByteArrayOutputStream out = new ByteArrayOutputStream(), err = new ByteArrayOutputStream();
-        StudySettings small = new StudySettings(2, new double[] {2}, 4, 1);
+        StudySettings small = new StudySettings(2, new double[] {2}, 4, 4, 1);
         int status = new Study(new RendererAdapter(1), small, 1, new PrintStream(out, true, StandardCharsets.UTF_8),
                 new PrintStream(err, true, StandardCharsets.UTF_8), false).run(List.of(bad, good), dir.resolve("r"), "test");
         assertEquals(1, status);
