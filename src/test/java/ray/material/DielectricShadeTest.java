@@ -148,6 +148,48 @@ class DielectricShadeTest {
             Diffuse e = new Diffuse();
             e.diffuseColor = new Vector3d(0, 0, bad);
             assertThrows(IllegalArgumentException.class, e::init, "diffuseColor " + bad);
+            BlinnPhong b = new BlinnPhong();
+            b.specularColor = new Vector3d(bad, 0, 0);
+            assertThrows(IllegalArgumentException.class, b::init, "specularColor " + bad);
+            BlinnPhong base = new BlinnPhong();
+            base.diffuseColor = new Vector3d(bad, 0, 0);
+            assertThrows(IllegalArgumentException.class, base::init, "a BlinnPhong checks what it inherits: diffuseColor " + bad);
         }
+    }
+
+    /**
+     * Outside a planned render (no plan cached) a Diffuse surface still adds k_a I_a per channel, and a
+     * BlinnPhong highlight does not depend on the length of the viewing ray's direction.
+     */
+    @Test
+    void unplannedAmbientPerChannelAndHighlightForAnyDirectionLength() {
+        Scene s = new Scene();
+        s.camera = new Camera();
+        s.ambientLight = new Vector3d(0.5, 0.25, 0.125);
+        Diffuse d = new Diffuse();
+        d.ambientColor = new Vector3d(0.2, 0.4, 0.8);
+        d.init();
+        IntersectionRecord rec = hit(true, 5);
+        rec.location.set(0, 0, 0);
+        Vector3d c = shade(d, new Ray(new Vector3d(0, 0, 5), new Vector3d(0, 0, -1)), rec, s);
+        assertEquals(new Vector3d(0.1, 0.1, 0.1), c, "k_a I_a with no light");
+        BlinnPhong b = new BlinnPhong();
+        b.diffuseColor = new Vector3d(0, 0, 0);
+        b.exponent = 3;
+        b.init();
+        ray.light.PointLight l = new ray.light.PointLight();
+        l.position = new Vector3d(3, 0, 4);
+        l.intensity = new Vector3d(25, 25, 25);
+        l.init();
+        s.lights.add(l);
+        s.ambientLight = new Vector3d();
+        Ray one = new Ray(new Vector3d(-1, 0, 2), new Vector3d(0.5, 0, -1));   // arriving at the origin
+        Ray four = new Ray(new Vector3d(-1, 0, 2), new Vector3d(2, 0, -4));
+        Vector3d h1 = shade(b, one, hit(true, 2), s), h4 = shade(b, four, hit(true, 0.5), s);
+        // h = normalize(l + v) with l = (0.6, 0, 0.8), v = (-1, 0, 2) / sqrt 5; I / r^2 = 1
+        double vx = -1 / Math.sqrt(5), vz = 2 / Math.sqrt(5), hx = 0.6 + vx, hz = 0.8 + vz;
+        double nh = hz / Math.sqrt(hx * hx + hz * hz);
+        assertEquals(Math.pow(nh, 3), h1.x, 1e-12, "the highlight " + h1);
+        assertEquals(h1.x, h4.x, 1e-12, "a direction four times longer: " + h4);
     }
 }
