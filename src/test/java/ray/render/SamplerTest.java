@@ -125,6 +125,41 @@ class SamplerTest {
         assertTrue(quadrant[0] && quadrant[1] && quadrant[2] && quadrant[3], "the first four samples cover the four quadrants");
     }
 
+    /** Vigna's splitmix64 finaliser, as published (splitmix64.c), for the known-answer test below. */
+    private static long splitmixFinaliser(long z) {
+        z = (z ^ (z >>> 30)) * 0xbf58476d1ce4e5b9L;
+        z = (z ^ (z >>> 27)) * 0x94d049bb133111ebL;
+        return z ^ (z >>> 31);
+    }
+
+    /**
+     * The samplers' hash is splitmix64's finaliser over the combined key, as its comment says: the
+     * finaliser restated here gives splitmix64's published first outputs from seed 0, and the hash is that
+     * finaliser applied in the documented order (so the jittered and Sobol pixels do not change silently).
+     */
+    @Test
+    void hashIsSplitmix64sFinaliserOverTheKey() {
+        long state = 0;
+        long[] published = {0xe220a8397b1dcdafL, 0x6e789e6aa1b965f4L, 0x06c45d188009454fL, 0xf88bb8a8724c81ecL};
+        for (long want : published) {
+            state += 0x9E3779B97F4A7C15L;
+            assertEquals(want, splitmixFinaliser(state), "splitmix64 from seed 0");
+        }
+        Random rnd = new Random(11);
+        for (int k = 0; k < 200; k++) {
+            int a = rnd.nextInt(), b = rnd.nextInt(), c = rnd.nextInt(), d = rnd.nextInt();
+            long h = splitmixFinaliser(0x9E3779B97F4A7C15L ^ a);
+            h = splitmixFinaliser(h ^ (b & 0xFFFFFFFFL) * 0xBF58476D1CE4E5B9L);
+            h = splitmixFinaliser(h ^ (c & 0xFFFFFFFFL) * 0x94D049BB133111EBL);
+            h = splitmixFinaliser(h ^ (d & 0xFFFFFFFFL) * 0x9E3779B97F4A7C15L);
+            assertEquals(h, Sampler.hash(a, b, c, d), "hash(" + a + ", " + b + ", " + c + ", " + d + ")");
+        }
+        assertEquals(0xe220a8397b1dcdafL, splitmixFinaliser(0x9E3779B97F4A7C15L ^ 0), "hash's first step for a = 0");
+        assertEquals(0.5, Sampler.unit(1L << 63), 0);
+        assertEquals(Math.nextDown(1.0), Sampler.unit(-1L), 0);
+        assertEquals(0, Sampler.unit(0x7FFL), 0, "only the top 53 bits count");
+    }
+
     @Test
     void permuteIsABijection() {
         Random rnd = new Random(3);
