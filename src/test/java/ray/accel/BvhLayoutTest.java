@@ -29,17 +29,37 @@ class BvhLayoutTest {
     /** Every call to a set's closestHit/anyHit: set name and run length. */
     static final List<String> calls = new ArrayList<>();
 
-    /** A set of probes: records its calls, and offers each probe's fixed t, last slot first. */
+    /** Ray set-ups made, and set-ups found overwritten by another set's, since the last clear. */
+    static int setUps, foreignSetUps;
+
+    /**
+     * A set of probes: records its calls, and offers each probe's fixed t, last slot first. Like a
+     * built-in set it makes a per-ray set-up on its first use in a query: its own marker in its own part
+     * of the scratch, checked on every later use.
+     */
     static final class ProbeSet extends PrimitiveSet {
         final String name;
+        final double marker;
 
         ProbeSet(String name, List<Surface> s) {
             super(s);
             this.name = name;
+            this.marker = name.hashCode() + 0.5;
+        }
+
+        private void setUp(RayQuery q) {
+            int at = id() * SCRATCH;
+            if (firstUse(q)) {
+                setUps++;
+                q.scratch[at] = marker;
+            } else if (q.scratch[at] != marker) {
+                foreignSetUps++;
+            }
         }
 
         @Override
         public void closestHit(int from, int to, int slot, RayQuery q) {
+            setUp(q);
             calls.add(name + (to - from));
             for (int i = to - 1; i >= from; i--) {   // the reverse of slot order
                 double t = ((Probe) surface(i)).t;
@@ -51,6 +71,7 @@ class BvhLayoutTest {
 
         @Override
         public boolean anyHit(int from, int to, RayQuery q) {
+            setUp(q);
             calls.add(name + (to - from));
             return false;
         }
@@ -69,14 +90,20 @@ class BvhLayoutTest {
 
     static final PrimitiveSet.Type A = s -> new ProbeSet("A", s), B = s -> new ProbeSet("B", s);
 
-    /** A box around the origin that the BVH holds in the set of its type; "hit" at t (never, if NaN). */
+    /** A box (the cube of side 2 around the origin, or a small one at z) held in its type's set; "hit" at t (never, if NaN). */
     static final class Probe extends Surface {
         final PrimitiveSet.Type type;
         final double t;
+        final Aabb box;
 
         Probe(PrimitiveSet.Type type, double t) {
+            this(type, t, new Aabb(-1, -1, -1, 1, 1, 1));
+        }
+
+        Probe(PrimitiveSet.Type type, double t, Aabb box) {
             this.type = type;
             this.t = t;
+            this.box = box;
         }
 
         @Override
@@ -86,7 +113,7 @@ class BvhLayoutTest {
 
         @Override
         public Aabb bounds() {
-            return new Aabb(-1, -1, -1, 1, 1, 1);
+            return new Aabb(box.minX, box.minY, box.minZ, box.maxX, box.maxY, box.maxZ);
         }
 
         @Override
@@ -179,5 +206,88 @@ class BvhLayoutTest {
             assertEquals(n, bvh.primitiveCount());
             assertEquals(56L * (leaves - 1) + 8L * n + 36L * spheres + 76L * triangles, bvh.memoryBytes(), n + " primitives");
         }
+    }
+
+    /**
+     * Each set makes its ray set-up once per query, in its own part of the scratch, however many leaves
+     * hand it slots: sixteen probes of two sets fill two leaves, so each set is called twice per query.
+     */
+    @Test
+    void eachSetMakesItsRaySetUpOncePerQueryInItsOwnScratch() {
+        List<Surface> list = new ArrayList<>();
+        for (int i = 0; i < 16; i++) {
+            list.add(new Probe(i % 2 == 0 ? A : B, Double.NaN));
+        }
+        Bvh bvh = Bvh.build(list, scene());
+        assertEquals(1, bvh.nodeCount(), "sixteen coincident boxes: two leaves");
+        TraceContext ctx = new TraceContext(2);
+        for (int query = 0; query < 3; query++) {
+            calls.clear();
+            setUps = foreignSetUps = 0;
+            bvh.closestHit(down(), new IntersectionRecord(), ctx);
+            assertEquals(List.of("A4", "B4", "A4", "B4"), calls, "two leaves, each with a run of each set");
+            assertEquals(2, setUps, "one set-up per set and query (query " + query + ")");
+            assertEquals(0, foreignSetUps, "no set reads another set's set-up");
+            setUps = 0;
+            bvh.anyHit(down(), ctx);
+            assertEquals(2, setUps, "any hit: one set-up per set and query");
+            assertEquals(0, foreignSetUps);
+        }
+    }
+
+    /**
+     * The closest-hit query visits the nearer child first and drops the farther one once a hit nearer
+     * than its box is found: eight probes of set A near the ray's origin (hit at t = 3) and eight of set B
+     * far behind them (their box starts at t = 14): B is never tested. The any-hit query stops at A's hit
+     * only if A reports one, so it is left out here.
+     */
+    @Test
+    void theNearerChildIsVisitedFirstAndAFartherOneDropped() {
+        List<Surface> list = new ArrayList<>();
+        for (int i = 0; i < 8; i++) {
+            double d = 0.01 * i;
+            list.add(new Probe(B, 15, new Aabb(-0.1 + d, -0.1, -11, 0.1 + d, 0.1, -9)));
+            list.add(new Probe(A, 3, new Aabb(-0.1 + d, -0.1, 1, 0.1 + d, 0.1, 3)));
+        }
+        Bvh bvh = Bvh.build(list, scene());
+        for (Vector3d dir : new Vector3d[] {new Vector3d(0, 0, -1), new Vector3d(0.001, 0, -1)}) {
+            calls.clear();
+            IntersectionRecord rec = new IntersectionRecord();
+            assertTrue(bvh.closestHit(new Ray(new Vector3d(0, 0, 5), dir), rec, new TraceContext(2)));
+            assertEquals(3, rec.t, 0);
+            assertEquals(List.of("A8"), calls, "only the near leaf is tested, along " + dir);
+        }
+        // from the other side the far cluster is the near one
+        calls.clear();
+        IntersectionRecord rec = new IntersectionRecord();
+        assertTrue(bvh.closestHit(new Ray(new Vector3d(0, 0, -20), new Vector3d(0, 0, 1)), rec, new TraceContext(2)));
+        assertEquals(List.of("B8"), calls, "from below, only the B leaf");
+    }
+
+    /** A surface without bounds, hit by a ray that misses the box of a one-leaf tree, is still the hit. */
+    @Test
+    void anUnboundedHitCountsWhenTheRayMissesTheTree() {
+        Surface floor = new Surface() {
+            @Override
+            public boolean intersects(Ray ray, IntersectionRecord record, Scene scene) {
+                double t = (ray.origin.y + 2) / -ray.direction.y;   // the plane y = -2
+                if (!(t >= ray.tMin && t <= ray.tMax)) {
+                    return false;
+                }
+                record.t = t;
+                record.location = ray.evaluate(t);
+                record.normal.set(0, 1, 0);
+                return true;
+            }
+        };
+        Probe box = new Probe(A, 1);
+        Bvh bvh = Bvh.build(new ArrayList<>(List.of(box, floor)), scene());
+        assertEquals(0, bvh.nodeCount(), "one bounded primitive: the root is a leaf");
+        Ray missingTheBox = new Ray(new Vector3d(10, 5, 0), new Vector3d(0, -1, 0));
+        IntersectionRecord rec = new IntersectionRecord();
+        assertTrue(bvh.closestHit(missingTheBox, rec, new TraceContext(2)), "the floor is hit");
+        assertEquals(7, rec.t, 1e-12);
+        assertSame(floor, rec.surface);
+        assertTrue(bvh.anyHit(new Ray(new Vector3d(10, 5, 0), new Vector3d(0, -1, 0)), new TraceContext(2)));
     }
 }

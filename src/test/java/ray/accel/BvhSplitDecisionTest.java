@@ -25,10 +25,13 @@ class BvhSplitDecisionTest {
     private static final long SEED = 20261202L;
 
     /** One decision: a leaf, or the slot where the right child starts. */
-    private static int expected(BvhBuilder b, int start, int end, String what) {
+    private static int expected(BvhBuilder b, int start, int end, int depth, String what) {
         int n = end - start;
         if (n == 1) {
             return -1;
+        }
+        if (depth >= BvhBuilder.SAH_DEPTH) {
+            return start + n / 2;   // past the SAH depth: halving by count, down to single primitives
         }
         float[] pb = b.primBox;
         float[] cent = new float[3 * n];
@@ -141,8 +144,8 @@ class BvhSplitDecisionTest {
     }
 
     /** Walks the tree; returns the end slot of subtree {@code ref} starting at slot {@code start}. */
-    private static int check(BvhBuilder b, int ref, int start, int end, String what) {
-        int want = expected(b, start, end, what);
+    private static int check(BvhBuilder b, int ref, int start, int end, int depth, String what) {
+        int want = expected(b, start, end, depth, what);
         if (ref < 0) {
             int leaf = ~ref;
             assertEquals(start, leaf >>> 4, "leaf start " + what);
@@ -155,9 +158,9 @@ class BvhSplitDecisionTest {
         if (want < 0) {
             fail("an inner node over slots [" + start + ", " + end + ") where the binned SAH makes a leaf " + what);
         }
-        int mid = check(b, b.nodeChild[2 * ref], start, want, what);
+        int mid = check(b, b.nodeChild[2 * ref], start, want, depth + 1, what);
         assertEquals(want, mid, what);
-        return check(b, b.nodeChild[2 * ref + 1], want, end, what);
+        return check(b, b.nodeChild[2 * ref + 1], want, end, depth + 1, what);
     }
 
     private static void checkTree(double[] box, String what) {
@@ -173,7 +176,7 @@ class BvhSplitDecisionTest {
                 assertTrue(b.primBox[6 * i + q] <= box[6 * id + q] && b.primBox[6 * i + 3 + q] >= box[6 * id + 3 + q], what);
             }
         }
-        check(b, b.root, 0, n, what);
+        check(b, b.root, 0, n, 0, what);
     }
 
     private static double[] random(Random r, int n, int kind) {
@@ -194,6 +197,19 @@ class BvhSplitDecisionTest {
                     x = 10 * r.nextDouble(); y = 10 * r.nextDouble(); z = 1;
                     ex = r.nextDouble(); ey = r.nextDouble(); ez = 0;
                 }
+                case 3 -> {   // centroids on a line along y (x and z alike): only y can split
+                    x = 1; y = 10 * r.nextDouble(); z = 2;
+                    ex = 2; ey = r.nextDouble(); ez = 2;
+                }
+                case 4 -> {   // centroids on a line along z
+                    x = 1; y = 2; z = 10 * r.nextDouble();
+                    ex = 2; ey = 2; ez = r.nextDouble();
+                }
+                case 5 -> {   // points on the x axis: zero areas, every split costs 0 and the first is taken, so
+                              // the tree peels a few points off per level down to SAH_DEPTH, then halves
+                    x = 10 * r.nextDouble(); y = 0; z = 0;
+                    ex = 0; ey = 0; ez = 0;
+                }
                 default -> {   // large overlapping boxes (leaves pay) with a few small ones
                     x = r.nextDouble(); y = r.nextDouble(); z = r.nextDouble();
                     boolean big = r.nextInt(4) != 0;
@@ -206,12 +222,12 @@ class BvhSplitDecisionTest {
         return b;
     }
 
-    /** Small sets (the leaf-or-split decisions) and larger ones (several levels), of four kinds. */
+    /** Small sets (the leaf-or-split decisions) and larger ones (several levels), of seven kinds. */
     @Test
     void everyNodeIsTheBinnedSahDecisionForItsPrimitives() {
         Random r = new Random(SEED);
         int[] sizes = {2, 3, 4, 5, 6, 7, 8, 9, 12, 16, 17, 30, 64, 200, 1000};
-        for (int kind = 0; kind < 4; kind++) {
+        for (int kind = 0; kind < 7; kind++) {
             for (int n : sizes) {
                 for (int rep = 0; rep < (n < 100 ? 6 : 1); rep++) {
                     long seed = r.nextLong();
