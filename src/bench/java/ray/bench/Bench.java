@@ -55,6 +55,8 @@ public final class Bench {
     private final List<String> scenes;
     /** The command that starts the installed program (its launcher). */
     private final List<String> self;
+    /** Another build timed in the same rounds ({@code --baseline}), or null. */
+    private Baseline baseline;
 
     public Bench(PrintStream out, PrintStream err, int runs, boolean withPeers, Path benchDir, Path work, List<String> scenes,
                  List<String> self) {
@@ -69,8 +71,9 @@ public final class Bench {
     }
 
     /**
-     * {@code gradle bench}: {@code ray.bench.Bench --launcher PATH [--runs N] [--peers] [--bench-dir DIR]
-     * [--bench-scenes LIST] [--bench-work DIR]}; the launcher is the installed {@code bin/raytracer}.
+     * {@code gradle bench}: {@code ray.bench.Bench --launcher PATH [--runs N] [--peers] [--baseline PATH]
+     * [--bench-dir DIR] [--bench-scenes LIST] [--bench-work DIR]}; the launcher is the installed
+     * {@code bin/raytracer}, the baseline another build's ({@link Baseline}).
      */
     public static void main(String[] args) {
         System.exit(run(System.out, System.err, args));
@@ -80,7 +83,7 @@ public final class Bench {
         int runs = 3;
         boolean peers = false;
         Path benchDir = null, work = defaultWork();
-        String list = null, launcher = null;
+        String list = null, launcher = null, base = null;
         try {
             for (int i = 0; i < args.length; i++) {
                 String a = args[i];
@@ -98,6 +101,7 @@ public final class Bench {
                     case "--bench-scenes" -> list = v;
                     case "--bench-work" -> work = Path.of(v);
                     case "--launcher" -> launcher = v;
+                    case "--baseline" -> base = v;
                     default -> throw new IllegalArgumentException("unknown option " + a);
                 }
             }
@@ -107,7 +111,12 @@ public final class Bench {
             if (launcher == null || !Files.isExecutable(Path.of(launcher))) {
                 throw new IllegalArgumentException("--launcher must name the installed bin/raytracer (gradle bench does)");
             }
-            return new Bench(out, err, runs, peers, findBenchDir(benchDir), work, sceneList(list), List.of(launcher)).run();
+            if (base != null && !Files.isExecutable(Path.of(base))) {
+                throw new IllegalArgumentException("--baseline must name another build's bin/raytracer, not " + base);
+            }
+            Bench b = new Bench(out, err, runs, peers, findBenchDir(benchDir), work, sceneList(list), List.of(launcher));
+            b.baseline = base == null ? null : new Baseline(base);
+            return b.run();
         } catch (IllegalArgumentException e) {
             err.println("bench: " + e.getMessage());
             return 2;
@@ -164,7 +173,9 @@ public final class Bench {
                     file.flush();
                 }
             }, true, StandardCharsets.UTF_8);
-            return new Bench(both, err, runs, withPeers, benchDir, work, scenes, self).report();
+            Bench b = new Bench(both, err, runs, withPeers, benchDir, work, scenes, self);
+            b.baseline = baseline;
+            return b.report();
         }
     }
 
@@ -191,6 +202,7 @@ public final class Bench {
             }
         }
         out.println("- rounds: 1 warm-up + " + runs + " timed; in each round every scene runs once with this program"
+                + (baseline == null ? "" : " and with the baseline (alternating which goes first)")
                 + (peerCmds.isEmpty() ? "" : " and then each peer, one after the other (interleaved)"));
         out.println();
 
@@ -203,7 +215,16 @@ public final class Bench {
                 List<String> cmd = new ArrayList<>(self);
                 cmd.addAll(List.of("-q", "--stats", "--json", scene.toAbsolutePath().toString(), "-o", work.resolve(s + ".png").toAbsolutePath().toString()));
                 Path log = work.resolve(s + ".log");
+                double[] base = null;
+                if (baseline != null && Baseline.baselineFirst(round)) {
+                    base = timeBaseline(s, scene);
+                }
+                double cpu0 = Baseline.childCpuSeconds();
                 double t = time(cmd, work, log);
+                double cpu = Baseline.childCpuSeconds() - cpu0;
+                if (baseline != null && base == null) {
+                    base = timeBaseline(s, scene);
+                }
                 String text = Files.readString(log, StandardCharsets.UTF_8);
                 Stats st = Stats.parse(text);
                 if (t < 0 || st == null) {
@@ -214,6 +235,9 @@ public final class Bench {
                 if (round > 0) {
                     times.computeIfAbsent(s, k -> new LinkedHashMap<>()).computeIfAbsent("raytracer", k -> new ArrayList<>()).add(t);
                     stats.computeIfAbsent(s, k -> new ArrayList<>()).add(st);
+                    if (base != null && base[0] >= 0) {
+                        baseline.record(s, t, cpu, base[0], base[1]);
+                    }
                 }
                 for (String p : peerCmds.keySet()) {
                     double pt = time(peerCommand(p, s), benchDir, work.resolve(s + "_" + p + ".log"));
@@ -226,6 +250,9 @@ public final class Bench {
         out.println("- load average after: " + loadAverage() + "; parallel check: " + String.format(Locale.ROOT, "%.2f", parallelCheck()));
         out.println();
         printProcessTable(times, stats);
+        if (baseline != null) {
+            baseline.print(out, scenes);
+        }
         if (!peerCmds.isEmpty()) {
             printPeerTable(times, peerCmds.keySet());
         }
@@ -289,6 +316,17 @@ public final class Bench {
         int rc = p.waitFor();
         long t1 = System.nanoTime();
         return rc == 0 ? (t1 - t0) / 1e9 : -1;
+    }
+
+    /** Wall and CPU seconds of the baseline build rendering {@code scene} (wall -1: it failed). */
+    private double[] timeBaseline(String s, Path scene) throws IOException, InterruptedException {
+        double cpu0 = Baseline.childCpuSeconds();
+        double t = time(baseline.command(scene, work.resolve(s + "_baseline.png")), work, work.resolve(s + "_baseline.log"));
+        double cpu = Baseline.childCpuSeconds() - cpu0;
+        if (t < 0) {
+            err.println("bench: " + s + ": the baseline failed (see " + work.resolve(s + "_baseline.log") + ")");
+        }
+        return new double[] {t, cpu};
     }
 
     private Path venvPython() {

@@ -139,7 +139,8 @@ public final class Main implements Callable<Integer> {
     /**
      * The everyday command lines, read without picocli, whose start-up costs about 0.15 s of CPU
      * (it reflects over the annotations of the whole command): scene files, {@code -o/--output PNG},
-     * {@code -j/--threads N}, {@code -q/--quiet} and {@code --stats}, each option at most once, values
+     * {@code -j/--threads N}, {@code -q/--quiet}, {@code --stats} and {@code --json} (what {@code gradle bench}
+     * runs), each option at most once, values
      * as separate words. Returns null for anything else (no arguments, help, version, other options,
      * repeated options, unusual values), which picocli then reads and reports exactly
      * as before.
@@ -165,6 +166,12 @@ public final class Main implements Callable<Integer> {
                             return null;
                         }
                         m.stats = true;
+                    }
+                    case "--json" -> {
+                        if (m.json) {
+                            return null;
+                        }
+                        m.json = true;
                     }
                     case "-o", "--output" -> {
                         if (m.output != null || i + 1 == args.length || !plainWord(args[i + 1])) {

@@ -52,7 +52,10 @@ final class Outputs {
     }
 
     static Outputs of(List<Path> scenes, String outputArg, boolean stdoutIsTerminal) throws UsageException {
-        long fromStdin = scenes.stream().filter(Outputs::isStdin).count();
+        int fromStdin = 0;
+        for (Path p : scenes) {   // a loop, not a stream: linking a stream's lambda costs start-up time
+            fromStdin += isStdin(p) ? 1 : 0;
+        }
         if (fromStdin > 1) {
             throw new UsageException("standard input ('-') can be read only once");
         }

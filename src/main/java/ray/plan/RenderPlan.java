@@ -75,7 +75,10 @@ public final class RenderPlan {
         }
         materials = new LinkedHashSet<>(used.keySet());
         materials.addAll(scene.materials);
-        java.util.ArrayDeque<Material> todo = new java.util.ArrayDeque<>(materials);
+        java.util.ArrayDeque<Material> todo = new java.util.ArrayDeque<>();
+        for (Material m : materials) {   // loops, not lambdas, here: the plan is derived at start-up
+            todo.add(m);
+        }
         while (!todo.isEmpty()) {   // the bases a Glazed material shades, declared or not
             if (todo.pop() instanceof GlazedMaterial g && g.base != null && materials.add(g.base)) {
                 todo.push(g.base);
@@ -92,12 +95,14 @@ public final class RenderPlan {
     private Material use(Surface s, Material last, java.util.ArrayDeque<Surface> parts) {
         Material m = s.material;
         if (m != null && m != last) {
-            used.computeIfAbsent(m, k -> Shading.of(k, skips));
+            if (!used.containsKey(m)) {
+                used.put(m, Shading.of(m, skips));
+            }
             last = m;
         }
         List<Surface> ops = s.operands();
-        if (!ops.isEmpty()) {
-            parts.addAll(ops);
+        for (int i = 0; i < ops.size(); i++) {
+            parts.add(ops.get(i));
         }
         return last;
     }

@@ -202,7 +202,7 @@ public final class PngWriter {
     /** A new empty file {@code .raytracer-<pid>-<random>.tmp} (at most 40 characters) in {@code dir}. */
     private static Path newTempFile(Path dir) throws IOException {
         installHook();
-        String prefix = TEMP_PREFIX + ProcessHandle.current().pid() + "-";
+        String prefix = TEMP_PREFIX + pid() + "-";
         for (int attempt = 0; ; attempt++) {
             Path p = dir.resolve(prefix + Long.toUnsignedString(ThreadLocalRandom.current().nextLong(), 36) + TEMP_SUFFIX);
             PENDING.add(p);
@@ -222,12 +222,31 @@ public final class PngWriter {
         }
     }
 
+    private static long pid;
+
+    /**
+     * This process's id: the target of /proc/self on Linux (ProcessHandle's first use sets up its
+     * process-reaper machinery, which a render that never starts a process does not need), else
+     * ProcessHandle's.
+     */
+    static long pid() {
+        if (pid == 0) {
+            try {
+                pid = Long.parseLong(Files.readSymbolicLink(Path.of("/proc/self")).toString());
+            } catch (IOException | RuntimeException e) {
+                pid = ProcessHandle.current().pid();
+            }
+        }
+        return pid;
+    }
+
     /**
      * Removes our own temporary files in {@code dir} whose process is gone (same machine: a process of
      * this name pattern that is alive keeps its file). Best effort: a folder we cannot list is left.
      */
     static void removeStaleTemporaries(Path dir) {
-        try (DirectoryStream<Path> s = Files.newDirectoryStream(dir, TEMP_PREFIX + "*" + TEMP_SUFFIX)) {
+        // every name is checked by tempPid, so no glob (a glob compiles a regular expression at start-up)
+        try (DirectoryStream<Path> s = Files.newDirectoryStream(dir)) {
             for (Path p : s) {
                 long pid = tempPid(p.getFileName().toString());
                 if (pid > 0 && ProcessHandle.of(pid).isEmpty() && Files.isRegularFile(p, LinkOption.NOFOLLOW_LINKS)) {

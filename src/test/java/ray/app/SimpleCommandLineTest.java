@@ -28,6 +28,10 @@ class SimpleCommandLineTest {
         assertEquals(1, two.threads);
         Main at = Main.simpleCommandLine(new String[] {"@scene.txt"});    // no argument files: a scene like any other
         assertEquals(List.of(Path.of("@scene.txt")), at.scenes);
+        Main bench = Main.simpleCommandLine(new String[] {"-q", "--stats", "--json", "a.txt", "-o", "a.png"});   // gradle bench's
+        assertNotNull(bench);
+        assertEquals(true, bench.json);
+        assertEquals(true, bench.stats);
     }
 
     /** Anything picocli might read differently, or must report, goes to picocli. */
@@ -36,7 +40,7 @@ class SimpleCommandLineTest {
         String[][] cases = {
             {}, {"--help"}, {"-h"}, {"--version"}, {"--bench"}, {"--output=x.png", "a.txt"}, {"-j4", "a.txt"},
             {"-j", "-1", "a.txt"}, {"-j", "x", "a.txt"}, {"-j", "1234567890", "a.txt"}, {"-o"}, {"a.txt", "-o", "-q"},
-            {"-q", "-q", "a.txt"}, {"--stats", "--stats", "a.txt"}, {"-o", "a.png", "-o", "b.png", "a.txt"},
+            {"-q", "-q", "a.txt"}, {"--stats", "--stats", "a.txt"}, {"--json", "--json", "--stats", "a.txt"}, {"-o", "a.png", "-o", "b.png", "a.txt"},
             {"-j", "1", "-j", "2", "a.txt"}, {"-"}, {"--", "a.txt"}, {""}, {"-qj", "2", "a.txt"},
         };
         for (String[] c : cases) {
@@ -50,6 +54,18 @@ class SimpleCommandLineTest {
         java.io.ByteArrayOutputStream err1 = new java.io.ByteArrayOutputStream(), err2 = new java.io.ByteArrayOutputStream();
         int direct = Main.run(new java.io.PrintStream(new java.io.ByteArrayOutputStream()), new java.io.PrintStream(err1), "-j", "0", "a.txt");
         int picocli = Main.run(new java.io.PrintStream(new java.io.ByteArrayOutputStream()), new java.io.PrintStream(err2), "--threads=0", "a.txt");
+        assertEquals(2, direct);
+        assertEquals(direct, picocli);
+        assertEquals(err2.toString(), err1.toString());
+    }
+
+    /** --json without --stats (or --plan) is refused the same way whichever path reads it. */
+    @Test
+    void jsonWithoutStatsIsRejectedTheSameWayOnBothPaths() {
+        java.io.ByteArrayOutputStream err1 = new java.io.ByteArrayOutputStream(), err2 = new java.io.ByteArrayOutputStream();
+        int direct = Main.run(new java.io.PrintStream(new java.io.ByteArrayOutputStream()), new java.io.PrintStream(err1), "--json", "a.txt");
+        int picocli = Main.run(new java.io.PrintStream(new java.io.ByteArrayOutputStream()), new java.io.PrintStream(err2), "--json", "--", "a.txt");
+        assertNotNull(Main.simpleCommandLine(new String[] {"--json", "a.txt"}));
         assertEquals(2, direct);
         assertEquals(direct, picocli);
         assertEquals(err2.toString(), err1.toString());
