@@ -83,8 +83,13 @@ public class IntersectionRecord {
         // stop short of the target by a fraction of the length and by the target's own rounding error
         double len = Math.sqrt(out.direction.x * out.direction.x + out.direction.y * out.direction.y
                 + out.direction.z * out.direction.z);
-        double m = Math.max(Math.abs(px), Math.max(Math.abs(py), Math.abs(pz)));
-        out.tMax = 1 - Math.max(SHADOW_END, TARGET_ERROR * m / len);
+        // Math.max by comparisons (C1 calls Math.max on every shadow ray rather than inlining it); the
+        // absolute values hold no -0, and a NaN still gives a NaN tMax, as Math.max would
+        double ax = Math.abs(px), ay = Math.abs(py), az = Math.abs(pz);
+        double m = ax >= ay ? ax : ay;
+        m = m >= az ? m : az;
+        double e = TARGET_ERROR * m / len;
+        out.tMax = 1 - (e >= SHADOW_END || e != e ? e : SHADOW_END);
     }
 
     /**

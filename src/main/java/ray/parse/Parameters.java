@@ -47,8 +47,8 @@ final class Parameters {
             throw parser.error("'" + type + " " + name + "' has no value (expected '" + type + " " + name + " "
                     + Fields.placeholder(type) + "')");
         }
-        Integer first = parser.currentFields().putIfAbsent(name, parser.line());
-        if (first != null) {
+        int first = parser.currentFields().putIfAbsent(name, parser.line());
+        if (first >= 0) {
             throw parser.error("field '" + name + "' is set twice (first at line " + first + "; expected each field once per object)");
         }
         Object v;

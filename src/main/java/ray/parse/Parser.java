@@ -54,7 +54,7 @@ public final class Parser {
     private String currentType;
     private int currentLine;
     private int blankAfter;            // the blank line that ended it (0: still open)
-    private final Map<String, Integer> currentFields = new HashMap<>();
+    private final FieldLines currentFields = new FieldLines();
     private int cameraLine;
     private int degenerate;
     /** Surfaces other surfaces are built from (CSG operands): left out of the scene at the end. */
@@ -294,6 +294,8 @@ public final class Parser {
     /** Per class, the fields plain parameter lines have set: name, Field and type keyword. */
     private final Map<Class<?>, List<FastField>> fastFields = new HashMap<>();
     private Class<?> fastClass;
+    /** The fast path's vector, read into this and copied into the field's new Vector3d. */
+    private final double[] xyz = new double[3];
     private List<FastField> fastClassFields;
     /** The object name a plain ref line last named and its object (a name never changes its object). */
     private String lastRefName;
@@ -358,15 +360,15 @@ public final class Parser {
             return false;
         }
         FastField ff = fastField(b, s1 + 1, s2);
-        if (ff == null || !ff.keyword.equals(FAST_TYPES[kind]) || currentFields.containsKey(ff.name)) {
+        if (ff == null || !ff.keyword.equals(FAST_TYPES[kind]) || currentFields.contains(ff.name)) {
             return false;
         }
         Field f = ff.field;
         int v0 = s2 + 1;
         Object v;
         if (kind == VECTOR) {
-            double[] xyz = Tokens.canonicalVector(b, v0, n);
-            if (xyz == null) {
+            double[] xyz = this.xyz;
+            if (!Tokens.canonicalVector(b, v0, n, xyz)) {
                 return false;
             }
             v = new Vector3d(xyz[0], xyz[1], xyz[2]);
@@ -405,7 +407,7 @@ public final class Parser {
         } catch (IllegalAccessException | RuntimeException e) {
             return false;                 // the general path sets it again and reports what fails
         }
-        currentFields.put(ff.name, line);
+        currentFields.putIfAbsent(ff.name, line);
         return true;
     }
 
@@ -416,7 +418,8 @@ public final class Parser {
             fastClass = c;
             fastClassFields = fastFields.computeIfAbsent(c, k -> new ArrayList<>());
         }
-        for (FastField e : fastClassFields) {
+        for (int i = 0; i < fastClassFields.size(); i++) {   // indexed: an iterator per line is garbage
+            FastField e = fastClassFields.get(i);
             if (equals(b, from, to, e.name)) {
                 return e;
             }
@@ -638,7 +641,7 @@ public final class Parser {
         return fields;
     }
 
-    Map<String, Integer> currentFields() {
+    FieldLines currentFields() {
         return currentFields;
     }
 

@@ -182,9 +182,15 @@ final class Tokens {
      * reports); for a plain vector it gives exactly these numbers.
      */
     static double[] canonicalVector(byte[] s, int from, int to) {
+        double[] out = new double[3];
+        return canonicalVector(s, from, to, out) ? out : null;
+    }
+
+    /** {@link #canonicalVector(byte[], int, int)} into {@code out} (no allocation): false where that returns null. */
+    static boolean canonicalVector(byte[] s, int from, int to, double[] out) {
         int n = to - from;
         if (n < 7 || s[from] != '[' || s[to - 1] != ']') {
-            return null;
+            return false;
         }
         int a = -1, b = -1;
         for (int i = from + 1; i < to - 1; i++) {
@@ -194,17 +200,20 @@ final class Tokens {
                 } else if (b < 0) {
                     b = i;
                 } else {
-                    return null;
+                    return false;
                 }
             }
         }
         if (b < 0 || !isDecimal(s, from + 1, a) || !isDecimal(s, a + 1, b) || !isDecimal(s, b + 1, to - 1)) {
-            return null;
+            return false;
         }
         double x = parseDecimal(s, from + 1, a), y = parseDecimal(s, a + 1, b), z = parseDecimal(s, b + 1, to - 1);
         if (!Double.isFinite(x) || !Double.isFinite(y) || !Double.isFinite(z)) {
-            return null;
+            return false;
         }
-        return new double[] {x, y, z};
+        out[0] = x;
+        out[1] = y;
+        out[2] = z;
+        return true;
     }
 }

@@ -92,6 +92,10 @@ public final class RenderPlan {
      * Notes how {@code s}'s material shades (unless it is {@code last}, noted just before) and queues its
      * operands; returns the material to compare the next surface with.
      */
+    /** The class of the surface {@link #use} saw last, and whether that class may have operands at all. */
+    private Class<? extends Surface> lastClass;
+    private boolean lastMayHaveOperands;
+
     private Material use(Surface s, Material last, java.util.ArrayDeque<Surface> parts) {
         Material m = s.material;
         if (m != null && m != last) {
@@ -100,9 +104,16 @@ public final class RenderPlan {
             }
             last = m;
         }
-        List<Surface> ops = s.operands();
-        for (int i = 0; i < ops.size(); i++) {
-            parts.add(ops.get(i));
+        Class<? extends Surface> c = s.getClass();
+        if (c != lastClass) {
+            lastClass = c;
+            lastMayHaveOperands = Trust.mayHaveOperands(c);
+        }
+        if (lastMayHaveOperands) {
+            List<Surface> ops = s.operands();
+            for (int i = 0; i < ops.size(); i++) {
+                parts.add(ops.get(i));
+            }
         }
         return last;
     }

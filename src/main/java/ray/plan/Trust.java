@@ -9,6 +9,7 @@ import ray.TraceContext;
 import ray.light.Light;
 import ray.light.LightSample;
 import ray.material.Material;
+import ray.surface.Surface;
 
 /**
  * Whether the plan may believe what an object declares: only when the class that declares it is the
@@ -42,6 +43,14 @@ final class Trust {
             }
         }
         return rays != Light.class;
+    }
+
+    /**
+     * False when {@code c} keeps {@link Surface#operands()} as Surface declares it (always empty), so a
+     * plan need not ask each of a mesh's many surfaces.
+     */
+    static boolean mayHaveOperands(Class<? extends Surface> c) {
+        return declaring(c, "operands") != Surface.class;
     }
 
     private static boolean below(Class<?> declarer, Class<?> implementer) {

@@ -107,7 +107,18 @@ public class Sphere extends Surface {
             t0 = c / q;
             t1 = q / a;
         }
-        double tNear = Math.min(t0, t1), tFar = Math.max(t0, t1);
+        // ordered by comparison, not Math.min/max, which C1 calls rather than inlines; a NaN root is a
+        // miss, as Math.min/max's NaN would be
+        double tNear, tFar;
+        if (t0 <= t1) {
+            tNear = t0;
+            tFar = t1;
+        } else if (t1 < t0) {
+            tNear = t1;
+            tFar = t0;
+        } else {
+            return Double.NaN;
+        }
         if (tNear >= tMin && tNear <= tMax) {
             return tNear;
         }
