@@ -36,10 +36,14 @@ public class Triangle extends Surface {
 
     @Override
     public void init() {
-        for (Vector3d v : new Vector3d[] {v0, v1, v2}) {
-            if (!Double.isFinite(v.x) || !Double.isFinite(v.y) || !Double.isFinite(v.z)) {
-                throw new IllegalArgumentException("triangle vertices must be finite, got " + v);
-            }
+        requireFinite(v0);   // one by one, not over a new array: a mesh has 100k triangles to check
+        requireFinite(v1);
+        requireFinite(v2);
+    }
+
+    private static void requireFinite(Vector3d v) {
+        if (!Double.isFinite(v.x) || !Double.isFinite(v.y) || !Double.isFinite(v.z)) {
+            throw new IllegalArgumentException("triangle vertices must be finite, got " + v);
         }
     }
 
