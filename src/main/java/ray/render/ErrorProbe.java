@@ -23,8 +23,10 @@ import ray.TraceContext;
  * <p><b>Which pixels.</b> Pixel i is probed with probability p_i proportional to the largest
  * per-sample variance in its 3 x 3 neighbourhood over its own sample count (what its mean's variance
  * would be had its samples disagreed like its neighbours': a pixel that stopped at 4 samples beside an
- * edge is where a missed edge hides, and held 40% of the error in some scenes) plus a third of the mean
- * of those (so every pixel can be picked; three quarters of the probes go where samples disagree), and
+ * edge is where a missed edge hides, and held 40% of the error in some scenes), at least a quarter of
+ * the largest squared difference between its mean and a neighbour's over its count (the spread of a
+ * pixel that the edge between them halves: pixels whose samples all agree yet sit on a contrast, which
+ * held a quarter of behind-camera's error), plus a third of the mean of those (so every pixel can be picked; three quarters of the probes go where samples disagree), and
  * contributes (I - A)(I - B) / p_i. The pixels are picked by systematic sampling in scan order (fixed
  * count, spread over the image).
  *
@@ -100,10 +102,31 @@ final class ErrorProbe {
         }
         // a pixel beside one whose samples disagree may have missed the same edge with its fewer
         // samples: the 3 x 3 maximum of the spread over its own count (its error if its samples had
-        // disagreed as much)
+        // disagreed as much); and a pixel whose mean differs from a neighbour's by d may hide the edge
+        // between them: d^2 / 4 is the spread of a pixel that edge halves
         double[] weight = SampledRender.neighbourhoodMax(disagree, w, h);
+        double[] mean = new double[3 * pixels];
         for (int p = 0; p < pixels; p++) {
-            weight[p] /= film.count(p % w, p / w);
+            int n = film.count(p % w, p / w);
+            for (int c = 0; c < 3; c++) {
+                mean[3 * p + c] = Film.clamp(film.sum(p % w, p / w, c) / n);
+            }
+        }
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++) {
+                int p = y * w + x, n = film.count(x, y);
+                double contrast = 0;
+                for (int j = Math.max(0, y - 1); j <= Math.min(h - 1, y + 1); j++) {
+                    for (int i = Math.max(0, x - 1); i <= Math.min(w - 1, x + 1); i++) {
+                        int q = j * w + i;
+                        for (int c = 0; c < 3; c++) {
+                            double d = mean[3 * p + c] - mean[3 * q + c];
+                            contrast = Math.max(contrast, d * d);
+                        }
+                    }
+                }
+                weight[p] = Math.max(weight[p], contrast / 4 * 255 * 255) / n;
+            }
         }
         double sum = 0;
         for (double v : weight) {
