@@ -125,6 +125,112 @@ class SamplerTest {
         assertTrue(quadrant[0] && quadrant[1] && quadrant[2] && quadrant[3], "the first four samples cover the four quadrants");
     }
 
+    /**
+     * The adaptive order as its comment describes it, checked choice by choice: the rotated-grid four
+     * first, then each pick a cell farthest (squared distance to the nearest taken cell) from those taken,
+     * the lowest such index, followed by its mirror image, so every even prefix is point-symmetric about
+     * the centre; the centre cell of an odd grid last.
+     */
+    @Test
+    void adaptiveOrderIsRotatedGridThenFarthestPointsWithMirrors() {
+        for (int n = 2; n <= 9; n++) {
+            int all = n * n, centre = n % 2 == 1 ? all / 2 : -1;
+            int[] order = AdaptiveSampler.farthestPointOrder(n);
+            int a = n / 8, b = 3 * n / 8;
+            int[] seeds = {a * n + b, (n - 1 - a) * n + (n - 1 - b), b * n + (n - 1 - a), (n - 1 - b) * n + a};
+            java.util.List<Integer> firsts = new java.util.ArrayList<>();
+            for (int c : seeds) {
+                if (!firsts.contains(c)) {
+                    firsts.add(c);
+                }
+            }
+            boolean[] taken = new boolean[all];
+            for (int k = 0; k < firsts.size(); k++) {
+                assertEquals((int) firsts.get(k), order[k], "n=" + n + ": rotated-grid cell " + k);
+                taken[order[k]] = true;
+            }
+            for (int k = firsts.size(); k < all; ) {
+                int pick = order[k];
+                if (pick == centre) {
+                    assertEquals(all - 1, k, "n=" + n + ": the centre comes last");
+                    break;
+                }
+                double best = -1;
+                int bestCell = -1;
+                for (int c = 0; c < all; c++) {
+                    if (!taken[c] && c != centre && nearest(n, c, taken) > best) {
+                        best = nearest(n, c, taken);
+                        bestCell = c;
+                    }
+                }
+                assertEquals(bestCell, pick, "n=" + n + ": pick " + k + " is the lowest farthest cell");
+                taken[pick] = true;
+                k++;
+                int mirror = all - 1 - pick;
+                if (!taken[mirror]) {
+                    assertEquals(mirror, order[k], "n=" + n + ": pick " + (k - 1) + " is followed by its mirror");
+                    taken[mirror] = true;
+                    k++;
+                }
+            }
+            for (int k = 4; k <= all; k += 2) {   // even prefixes from 4 on: point-symmetric (the centre aside)
+                java.util.Set<Integer> prefix = new java.util.HashSet<>();
+                for (int q = 0; q < k; q++) {
+                    prefix.add(order[q]);
+                }
+                for (int c : prefix) {
+                    assertTrue(c == centre || prefix.contains(all - 1 - c), "n=" + n + ": prefix " + k + " holds " + c + " without its mirror");
+                }
+            }
+        }
+    }
+
+    private static double nearest(int n, int c, boolean[] taken) {
+        double m = Double.POSITIVE_INFINITY;
+        for (int t = 0; t < taken.length; t++) {
+            if (taken[t]) {
+                double dx = c % n - t % n, dy = c / n - t / n;
+                m = Math.min(m, dx * dx + dy * dy);
+            }
+        }
+        return m;
+    }
+
+    /** Vigna's splitmix64 finaliser, as published (splitmix64.c), for the known-answer test below. */
+    private static long splitmixFinaliser(long z) {
+        z = (z ^ (z >>> 30)) * 0xbf58476d1ce4e5b9L;
+        z = (z ^ (z >>> 27)) * 0x94d049bb133111ebL;
+        return z ^ (z >>> 31);
+    }
+
+    /**
+     * The samplers' hash is splitmix64's finaliser over the combined key, as its comment says: the
+     * finaliser restated here gives splitmix64's published first outputs from seed 0, and the hash is that
+     * finaliser applied in the documented order (so the jittered and Sobol pixels do not change silently).
+     */
+    @Test
+    void hashIsSplitmix64sFinaliserOverTheKey() {
+        long state = 0;
+        long[] published = {0xe220a8397b1dcdafL, 0x6e789e6aa1b965f4L, 0x06c45d188009454fL, 0xf88bb8a8724c81ecL};
+        for (long want : published) {
+            state += 0x9E3779B97F4A7C15L;
+            assertEquals(want, splitmixFinaliser(state), "splitmix64 from seed 0");
+        }
+        Random rnd = new Random(11);
+        for (int k = 0; k < 200; k++) {
+            int a = rnd.nextInt(), b = rnd.nextInt(), c = rnd.nextInt(), d = rnd.nextInt();
+            long h = splitmixFinaliser(0x9E3779B97F4A7C15L ^ a);
+            h = splitmixFinaliser(h ^ (b & 0xFFFFFFFFL) * 0xBF58476D1CE4E5B9L);
+            h = splitmixFinaliser(h ^ (c & 0xFFFFFFFFL) * 0x94D049BB133111EBL);
+            h = splitmixFinaliser(h ^ (d & 0xFFFFFFFFL) * 0x9E3779B97F4A7C15L);
+            assertEquals(h, Sampler.hash(a, b, c, d), "hash(" + a + ", " + b + ", " + c + ", " + d + ")");
+        }
+        assertEquals(0xe220a8397b1dcdafL, splitmixFinaliser(0x9E3779B97F4A7C15L ^ 0), "hash's first step for a = 0");
+        assertEquals(0.5, Sampler.unit(1L << 63), 0);
+        assertEquals(Math.nextDown(1.0), Sampler.unit(-1L), 0);
+        assertEquals(0, Sampler.unit(0x7FFL), 0, "only the top 53 bits count");
+    }
+
     @Test
     void permuteIsABijection() {
         Random rnd = new Random(3);
