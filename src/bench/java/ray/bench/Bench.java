@@ -14,11 +14,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 import ray.RayKind;
-import ray.Scene;
-import ray.parse.Parser;
 
 /**
  * {@code raytracer --bench}: renders the benchmark scenes ({@code classic}, {@code mirrors},
@@ -42,9 +38,6 @@ import ray.parse.Parser;
 public final class Bench {
 
     public static final List<String> SCENES = List.of("classic", "mirrors", "spheres10k", "mesh100k");
-    private static final List<String> PEERS = List.of("pov", "tachyon", "sunflow", "mitsuba_llvm");
-    private static final Map<String, String> PEER_NAMES = Map.of(
-            "pov", "POV-Ray 3.7", "tachyon", "Tachyon", "sunflow", "Sunflow (Java)", "mitsuba_llvm", "Mitsuba 3 (LLVM)");
 
     private final PrintStream out;
     private final PrintStream err;
@@ -57,6 +50,7 @@ public final class Bench {
     private final List<String> self;
     /** Another build timed in the same rounds ({@code --baseline}), or null. */
     private Baseline baseline;
+    private final Peers peers;
 
     public Bench(PrintStream out, PrintStream err, int runs, boolean withPeers, Path benchDir, Path work, List<String> scenes,
                  List<String> self) {
@@ -68,6 +62,7 @@ public final class Bench {
         this.work = work;
         this.scenes = scenes;
         this.self = self;
+        this.peers = new Peers(benchDir, work, scenes);
     }
 
     /**
@@ -185,18 +180,18 @@ public final class Bench {
         out.println();
         out.println("- command: `" + String.join(" ", self) + " -q --stats --json SCENE -o PNG`");
         out.println("- scenes: " + sceneDir.toAbsolutePath().normalize());
-        out.println("- machine: " + Runtime.getRuntime().availableProcessors() + " cores, " + cpuName() + "; "
+        out.println("- machine: " + Runtime.getRuntime().availableProcessors() + " cores, " + Machine.cpuName() + "; "
                 + System.getProperty("java.vm.name") + " " + System.getProperty("java.version"));
-        out.println("- load average before: " + loadAverage() + "; parallel check (2 processes' wall / 1; 1.0 = two free cores): "
-                + String.format(Locale.ROOT, "%.2f", parallelCheck()));
+        out.println("- load average before: " + Machine.loadAverage() + "; parallel check (2 processes' wall / 1; 1.0 = two free cores): "
+                + String.format(Locale.ROOT, "%.2f", Machine.parallelCheck()));
 
         Map<String, List<String>> peerCmds = new LinkedHashMap<>();
         if (withPeers) {
-            for (String p : PEERS) {
-                if (peerAvailable(p)) {
+            for (String p : Peers.ALL) {
+                if (peers.available(p)) {
                     peerCmds.put(p, null);
                 } else {
-                    out.println("- peer " + PEER_NAMES.get(p) + ": not installed or not translated in " + benchDir
+                    out.println("- peer " + Peers.NAMES.get(p) + ": not installed or not translated in " + benchDir
                             + " (bash peers/run_peers.sh install scenes translate), left out");
                 }
             }
@@ -240,23 +235,23 @@ public final class Bench {
                     }
                 }
                 for (String p : peerCmds.keySet()) {
-                    double pt = time(peerCommand(p, s), benchDir, work.resolve(s + "_" + p + ".log"));
+                    double pt = time(peers.command(p, s), benchDir, work.resolve(s + "_" + p + ".log"));
                     if (round > 0 && pt >= 0) {
                         times.get(s).computeIfAbsent(p, k -> new ArrayList<>()).add(pt);
                     }
                 }
             }
         }
-        out.println("- load average after: " + loadAverage() + "; parallel check: " + String.format(Locale.ROOT, "%.2f", parallelCheck()));
+        out.println("- load average after: " + Machine.loadAverage() + "; parallel check: " + String.format(Locale.ROOT, "%.2f", Machine.parallelCheck()));
         out.println();
         printProcessTable(times, stats);
         if (baseline != null) {
             baseline.print(out, scenes);
         }
         if (!peerCmds.isEmpty()) {
-            printPeerTable(times, peerCmds.keySet());
+            peers.printTable(out, runs, times, peerCmds.keySet());
         }
-        printKindTable(sceneDir);
+        new InProcessTables(out, work, benchDir, scenes, withPeers, peers).print(sceneDir);
         return failures == 0 ? 0 : 1;
     }
 
@@ -308,7 +303,7 @@ public final class Bench {
 
 
     /** Wall seconds of one run of {@code cmd} (stdout and stderr to {@code log}); -1 when it failed. */
-    private static double time(List<String> cmd, Path dir, Path log) throws IOException, InterruptedException {
+    static double time(List<String> cmd, Path dir, Path log) throws IOException, InterruptedException {
         ProcessBuilder pb = new ProcessBuilder(cmd).directory(dir.toFile()).redirectErrorStream(true)
                 .redirectOutput(log.toFile());
         long t0 = System.nanoTime();
@@ -327,60 +322,6 @@ public final class Bench {
             err.println("bench: " + s + ": the baseline failed (see " + work.resolve(s + "_baseline.log") + ")");
         }
         return new double[] {t, cpu};
-    }
-
-    private Path venvPython() {
-        String v = System.getenv("VENV");
-        Path venv = v != null && !v.isEmpty() ? Path.of(v) : benchDir.resolve("peers/.venv");
-        if (!venv.isAbsolute()) {
-            venv = benchDir.resolve(venv);
-        }
-        return venv.resolve("bin/python");
-    }
-
-    private boolean peerAvailable(String p) {
-        String first = scenes.get(0);
-        switch (p) {
-            case "pov":
-                return onPath("povray") && Files.isRegularFile(benchDir.resolve("peers/build/pov/" + first + ".pov"));
-            case "tachyon":
-                return onPath("tachyon-nox") && Files.isRegularFile(benchDir.resolve("peers/build/tachyon/" + first + ".dat"));
-            case "sunflow":
-                return Files.isRegularFile(Path.of("/usr/share/java/sunflow.jar"))
-                        && Files.isRegularFile(benchDir.resolve("peers/sunflow/SunflowRender.class"))
-                        && Files.isRegularFile(benchDir.resolve("peers/build/sunflow/" + first + ".sc"));
-            default:
-                return Files.isExecutable(venvPython()) && Files.isRegularFile(benchDir.resolve("peers/build/mitsuba/" + first + ".xml"));
-        }
-    }
-
-    /** The command line run_peers.sh uses for a peer (run in the bench directory). */
-    private List<String> peerCommand(String p, String s) {
-        String png = work.resolve("peer_" + p + ".png").toAbsolutePath().toString();
-        switch (p) {
-            case "pov":
-                return List.of("povray", "peers/build/pov/" + s + ".ini", "+Ipeers/build/pov/" + s + ".pov", "+O" + png);
-            case "tachyon":
-                return List.of("tachyon-nox", "peers/build/tachyon/" + s + ".dat", "-format", "PNG", "-o", png);
-            case "sunflow":
-                return List.of("java", "-cp", "/usr/share/java/sunflow.jar:peers/sunflow", "SunflowRender",
-                        "peers/build/sunflow/" + s + ".sc", png);
-            default:
-                return List.of(venvPython().toString(), "peers/mitsuba_whitted.py", "llvm_ad_rgb", "peers/build/mitsuba/" + s + ".xml", png);
-        }
-    }
-
-    private static boolean onPath(String exe) {
-        String path = System.getenv("PATH");
-        if (path == null) {
-            return false;
-        }
-        for (String d : path.split(":")) {
-            if (!d.isEmpty() && Files.isExecutable(Path.of(d, exe))) {
-                return true;
-            }
-        }
-        return false;
     }
 
     // ---- the child's --stats line ----
@@ -439,7 +380,7 @@ public final class Bench {
 
     // ---- tables ----
 
-    private static double median(List<Double> v) {
+    static double median(List<Double> v) {
         double[] a = v.stream().mapToDouble(Double::doubleValue).sorted().toArray();
         return a.length == 0 ? Double.NaN : a.length % 2 == 1 ? a[a.length / 2] : 0.5 * (a[a.length / 2 - 1] + a[a.length / 2]);
     }
@@ -483,216 +424,6 @@ public final class Bench {
                     a.rays() / render / 1e6, medianOf(l, x -> x.peakMiB), a.bvhBytes));
         }
         out.println();
-    }
-
-    private void printPeerTable(Map<String, Map<String, List<Double>>> times, java.util.Set<String> peers) {
-        out.println("## Against the peers (whole process, median of " + runs + ", interleaved in the same rounds)");
-        out.println();
-        StringBuilder h = new StringBuilder("| scene | raytracer s |");
-        StringBuilder sep = new StringBuilder("|---|---:|");
-        for (String p : peers) {
-            h.append(' ').append(PEER_NAMES.get(p)).append(" s | ratio |");
-            sep.append("---:|---:|");
-        }
-        out.println(h);
-        out.println(sep);
-        for (String s : scenes) {
-            Map<String, List<Double>> t = times.get(s);
-            if (t == null) {
-                continue;
-            }
-            double ours = median(t.getOrDefault("raytracer", List.of()));
-            StringBuilder row = new StringBuilder(String.format(Locale.ROOT, "| %s | %.2f |", s, ours));
-            for (String p : peers) {
-                double theirs = median(t.getOrDefault(p, List.of()));
-                row.append(String.format(Locale.ROOT, " %.2f | %.2f |", theirs, ours / theirs));
-            }
-            out.println(row);
-        }
-        out.println();
-        out.println("ratio = raytracer's median / the peer's median: below 1 the raytracer was faster.");
-        out.println();
-    }
-
-    /** The installed launcher's JVM options, as build.gradle hands them to this JVM (ray.bench.launcherJvmArgs). */
-    private static List<String> launcherJvmArgs() {
-        String a = System.getProperty("ray.bench.launcherJvmArgs", "-XX:+UseParallelGC -XX:TieredStopAtLevel=1").trim();
-        return List.of(a.split("\\s+"));
-    }
-
-    /** A JVM like this one (its class path), running {@code ray.bench.Throughput} with the given JIT. */
-    private static List<String> throughputCommand(boolean fullJit, String... args) {
-        List<String> cmd = new ArrayList<>(List.of(ProcessHandle.current().info().command().orElse("java")));
-        cmd.addAll(launcherJvmArgs());
-        if (fullJit) {
-            cmd.add("-XX:TieredStopAtLevel=4");   // the last one wins
-        }
-        cmd.addAll(List.of("-cp", System.getProperty("java.class.path"), "ray.bench.Throughput"));
-        cmd.addAll(List.of(args));
-        return cmd;
-    }
-
-    private void printKindTable(Path sceneDir) throws IOException, InterruptedException {
-        out.println("## Rays per second by kind, acceleration structure alone (1 thread, after warm-up)");
-        out.println();
-        out.println("Camera rays at pixel centres (closest hit with the hit record filled in) and every ray a render of "
-                + "them casts, recorded by kind (shadow rays: any hit; the others: closest hit); median of 7 "
-                + "passes, Mrays/s, each scene in a fresh JVM. C1: the launcher's JVM options (" + String.join(" ", launcherJvmArgs())
-                + "); C2: the full JIT, for the steady state of a long render.");
-        out.println();
-        StringBuilder head = new StringBuilder("| scene, JIT |"), rule = new StringBuilder("|---|");
-        for (ray.RayKind k : ray.RayKind.values()) {
-            head.append(' ').append(k.key()).append(" |");
-            rule.append("---:|");
-        }
-        out.println(head + " camera rays, any hit |");
-        out.println(rule + "---:|");
-        for (String s : scenes) {
-            for (boolean c2 : new boolean[] {false, true}) {
-                Path log = work.resolve("throughput.log");
-                String name = s + ", " + (c2 ? "C2" : "C1");
-                double t = time(throughputCommand(c2, "--row", name, sceneDir.resolve(s + ".txt").toAbsolutePath().toString()), work, log);
-                String text = Files.readString(log, StandardCharsets.UTF_8).trim();
-                out.println(t >= 0 && text.startsWith("|") ? text : "| " + name + " | failed |  |  |  |");
-            }
-        }
-        out.println();
-        out.println("## Allocation on the hot path (a whole render on one thread, the launcher's JIT, after a warm-up render)");
-        out.println();
-        out.println("Heap bytes the render thread allocated (com.sun.management.ThreadMXBean), less the image itself "
-                + "(24 bytes per pixel, allocated once). C1 has no escape analysis, so nothing here is removed by the JIT.");
-        out.println();
-        out.println("| scene | rays | bytes allocated besides the image | bytes per ray |");
-        out.println("|---|---:|---:|---:|");
-        for (String s : scenes) {
-            Path log = work.resolve("alloc.log");
-            double t = time(throughputCommand(false, "--alloc", sceneDir.resolve(s + ".txt").toAbsolutePath().toString()), work, log);
-            String[] f = Files.readString(log, StandardCharsets.UTF_8).trim().split(" ");
-            if (t < 0 || f.length != 5 || !f[0].equals("alloc")) {
-                out.println("| " + s + " | failed |  |  |");
-                continue;
-            }
-            out.println(String.format(Locale.ROOT, "| %s | %,d | %,d | %s |", s, Long.parseLong(f[2]),
-                    Long.parseLong(f[3]) - Long.parseLong(f[4]), f[1]));
-        }
-        out.println();
-        if (scenes.contains("mesh100k")) {
-            embreeComparison(sceneDir.resolve("mesh100k.txt"));
-        }
-    }
-
-    /** Closest-hit and any-hit camera-ray rates {median, best} of this program in a fresh JVM with the full JIT. */
-    private double[] ourCameraRates(Path scene) throws IOException, InterruptedException {
-        Path log = work.resolve("camera.log");
-        if (time(throughputCommand(true, "--camera", scene.toAbsolutePath().toString()), work, log) < 0) {
-            return null;
-        }
-        double[] r = new double[4];
-        for (String l : Files.readAllLines(log)) {
-            String[] f = l.trim().split(" ");
-            if (f.length == 3 && (f[0].equals("closest") || f[0].equals("any"))) {
-                int o = f[0].equals("closest") ? 0 : 2;
-                r[o] = Double.parseDouble(f[1]);
-                r[o + 1] = Double.parseDouble(f[2]);
-            }
-        }
-        return r;
-    }
-
-    private void embreeComparison(Path meshScene) {
-        Path py = venvPython(), script = benchDir.resolve("peers/embree_rays.py");
-        if (!withPeers || !Files.isExecutable(py) || !Files.isRegularFile(script)) {
-            return;
-        }
-        out.println("## Traversal against Embree (mesh100k camera rays, 1 thread, same session)");
-        out.println();
-        try {
-            Path log = work.resolve("embree.log");
-            double[] before = ourCameraRates(meshScene);
-            double t = time(List.of(py.toString(), script.toAbsolutePath().toString(), meshScene.toAbsolutePath().toString()), benchDir, log);
-            double[] after = ourCameraRates(meshScene);
-            String text = Files.readString(log, StandardCharsets.UTF_8);
-            double ec = embreeRate(text, "INTERSECT"), eo = embreeRate(text, "OCCLUDED");
-            if (t < 0 || Double.isNaN(ec) || before == null || after == null) {
-                out.println("embree_rays.py or the raytracer's measurement failed:\n```\n" + text + "```\n");
-                return;
-            }
-            out.println("This program in a fresh JVM with the full JIT (C2), median of 9 passes after 5 warm-up passes, "
-                    + "measured just before and just after Embree's run; Embree's median of 7 from embree_rays.py.");
-            out.println();
-            out.println("| query | raytracer Mrays/s (before / after) | Embree 4 Mrays/s | raytracer / Embree |");
-            out.println("|---|---:|---:|---:|");
-            out.println(String.format(Locale.ROOT, "| closest hit | %.2f / %.2f | %.2f | %.0f%% |", before[0], after[0], ec,
-                    100 * 0.5 * (before[0] + after[0]) / ec));
-            out.println(String.format(Locale.ROOT, "| any hit | %.2f / %.2f | %.2f | %.0f%% |", before[2], after[2], eo,
-                    100 * 0.5 * (before[2] + after[2]) / eo));
-            out.println();
-            out.println("Embree's output:");
-            out.println("```");
-            out.print(text);
-            out.println("```");
-            out.println();
-        } catch (IOException | InterruptedException e) {
-            out.println("embree_rays.py could not be run: " + e);
-        }
-    }
-
-    private static double embreeRate(String text, String query) {
-        Matcher m = Pattern.compile(query + " +1 thread *: median [0-9.]+ s = ([0-9.]+) Mrays/s").matcher(text);
-        return m.find() ? Double.parseDouble(m.group(1)) : Double.NaN;
-    }
-
-    // ---- the machine ----
-
-    private static String loadAverage() {
-        try {
-            String[] f = Files.readString(Path.of("/proc/loadavg")).trim().split(" ");
-            return f[0] + " " + f[1] + " " + f[2];
-        } catch (IOException | RuntimeException e) {
-            return "unknown";
-        }
-    }
-
-    private static String cpuName() {
-        try {
-            for (String l : Files.readAllLines(Path.of("/proc/cpuinfo"))) {
-                if (l.startsWith("model name")) {
-                    return l.substring(l.indexOf(':') + 1).trim();
-                }
-            }
-        } catch (IOException | RuntimeException e) {
-            // not Linux
-        }
-        return System.getProperty("os.arch");
-    }
-
-    /**
-     * How many cores' worth of throughput the machine gives right now, like run_peers.sh's parcheck:
-     * the wall time of two threads each spinning a fixed loop, over the time of one (1.0: two free
-     * cores; 2.0: one).
-     */
-    static double parallelCheck() throws InterruptedException {
-        spin(20_000_000);   // compile it first
-        long t0 = System.nanoTime();
-        spin(200_000_000);
-        long t1 = System.nanoTime();
-        Thread a = new Thread(() -> spin(200_000_000)), b = new Thread(() -> spin(200_000_000));
-        a.start();
-        b.start();
-        a.join();
-        b.join();
-        long t2 = System.nanoTime();
-        return (double) (t2 - t1) / (t1 - t0);
-    }
-
-    private static volatile long sink;
-
-    private static void spin(long n) {
-        long x = 1;
-        for (long i = 0; i < n; i++) {
-            x = x * 6364136223846793005L + 1442695040888963407L;
-        }
-        sink = x;
     }
 
     /** Scenes from a comma list, checked against {@link #SCENES}. */

@@ -9,8 +9,8 @@ import ray.TraceContext;
  * the grid's error. No formula on a pixel's own samples can know it: a grid is exact on an edge that
  * runs along a row of cell boundaries and off by up to 1 / (2 n_s) on one just beside it, with the same
  * samples. So a few probe pixels are rendered again, twice, with two independently scrambled sets of
- * Owen-scrambled Sobol points ({@link #halfSamples} each, about 2 n_s^2), and the image's mean squared
- * error is estimated from them (Horvitz-Thompson).
+ * Owen-scrambled Sobol points, and the image's mean squared error is estimated from them
+ * (Horvitz-Thompson).
  *
  * <p><b>Why two sets and a product.</b> With one probe P per pixel, (I - P)^2 estimates d^2 + var(P),
  * d = I - truth: the probe's own error counts in, and where the image is good (an 8 x 8 budget, or a
@@ -23,22 +23,34 @@ import ray.TraceContext;
  * <p><b>Which pixels.</b> Pixel i is probed with probability p_i proportional to the largest
  * per-sample variance in its 3 x 3 neighbourhood over its own sample count (what its mean's variance
  * would be had its samples disagreed like its neighbours': a pixel that stopped at 4 samples beside an
- * edge is where a missed edge hides, and held 40% of the error in some scenes) plus a third of the mean
- * of those (so every pixel can be picked; three quarters of the probes go where samples disagree), and
- * contributes (I - A)(I - B) / p_i. About one pixel
- * in 64 is probed ({@link #probeCount}), picked by systematic sampling in scan order (fixed count,
- * spread over the image); a pixel whose neighbourhood's samples all agree gets {@link #CALM} samples a
- * set (nothing varies there, and a feature the image missed shows with few samples too). The
- * estimate's spread comes with it: a 95% interval from the spread of the probes' contributions (the
- * with-replacement variance formula, which systematic sampling does not exceed in practice). The probes
- * cost {@link Estimate#samplesPerPixel}: about 1 sample per pixel at n_s = 4 and 2 at n_s = 8 on
- * 200 x 150 images, more on smaller ones (at least 512 cheap probes). Nothing depends on threads.
+ * edge is where a missed edge hides, and held 40% of the error in some scenes), at least a quarter of
+ * the largest squared difference between its mean and a neighbour's over its count (the spread of a
+ * pixel that the edge between them halves: pixels whose samples all agree yet sit on a contrast, which
+ * held a quarter of behind-camera's error), plus a third of the mean of those (so every pixel can be picked; three quarters of the probes go where samples disagree), and
+ * contributes (I - A)(I - B) / p_i. The pixels are picked by systematic sampling in scan order (fixed
+ * count, spread over the image).
+ *
+ * <p><b>How many samples.</b> Each set has {@link #halfSamples} of the pixel's own count (twice it, so
+ * a set alone is better than the pixel it judges), {@link #CALM} where the neighbourhood's samples all
+ * agree (nothing varies there, and a feature the image missed shows with few samples too). The number
+ * of probes is set so that they cost {@link #BUDGET} samples per pixel ({@link #probeCount}): a fixed,
+ * reported price ({@link Estimate#samplesPerPixel}). Nothing depends on threads.
+ *
+ * <p><b>Its spread.</b> A 95% interval comes with the estimate, from the spread of the probes'
+ * contributions (the with-replacement variance formula). It cannot see error in pixels no probe hit,
+ * so at very small errors (below about {@link #RESOLUTION} steps, where a few pixels hold most of it)
+ * it can be too narrow: there, measured on every scene, the estimate can be off by up to 1.6x either
+ * way while both are far below one 8-bit step.
  */
 final class ErrorProbe {
 
     private static final int SEED_A = 0xe770be, SEED_B = 0x5eb0b1;
     /** Samples in each set of a probe whose 3 x 3 neighbourhood's samples all agree. */
     static final int CALM = 16;
+    /** What the probes cost, in samples per pixel of the image (both sets). */
+    static final double BUDGET = 2;
+    /** RMSE (8-bit steps) below which the estimate does not resolve the error to a factor of 1.5. */
+    static final double RESOLUTION = 0.05;
 
     /** What the probes measured: RMSE in 8-bit steps, its 95% interval, and the probes' cost. */
     record Estimate(double rmse, double low, double high, int probes, double samplesPerPixel) {
@@ -60,27 +72,26 @@ final class ErrorProbe {
     }
 
     /**
-     * Samples in each of a probe's two sets for a render with n_s = {@code ns}: the power of two nearest
-     * above 2 n_s^2 (at least 16, at most 2,048), so each set alone is at least as good as the pixel it
-     * judges and its prefix is a (0, m, 2)-net.
+     * Samples in each of a probe's two sets for a pixel that took {@code n}: the power of two at or
+     * above 2n (at least 16, at most 2,048), so each set alone is better than the pixel it judges and is
+     * a (0, m, 2)-net.
      */
-    static int halfSamples(int ns) {
-        int want = Math.max(16, Math.min(2048, 2 * ns * ns));
+    static int halfSamples(int n) {
+        int want = Math.max(16, Math.min(2048, 2 * n));
         return Integer.highestOneBit(want - 1) << 1;
     }
 
     /**
-     * How many pixels to probe: one in 64 (at least 512, at most 16,384) while a probe takes up to 2 x 32
-     * samples, fewer as probes grow dearer (by sqrt(32 / m): one in 128 at n_s = 8), so the cost stays
-     * near 1 to 2 samples per pixel while the spread of the estimate stays within about 25%.
+     * How many pixels to probe when a probe costs {@code expectedCost} samples on average: as many as
+     * {@link #BUDGET} samples per pixel buy, at least 256 (or every pixel), at most one pixel in 8.
      */
-    static int probeCount(int pixels, int m) {
-        double f = Math.min(1, Math.sqrt(32.0 / m));
-        return (int) Math.max(Math.min(pixels, 512 * f), Math.min(16384 * f, pixels / 64.0 * f));
+    static int probeCount(int pixels, double expectedCost) {
+        int want = (int) Math.round(BUDGET * pixels / expectedCost);
+        return Math.min(pixels, Math.max(Math.min(256, pixels), Math.min(want, pixels / 8)));
     }
 
-    /** Measures the estimated RMSE of the clamped image; {@code ns} is the render's n_s. */
-    Estimate measure(int ns) {
+    /** Measures the estimated RMSE of the clamped image. */
+    Estimate measure() {
         int w = scene.width, h = scene.height, pixels = w * h;
         // per-sample variance: how much the samples disagree, whatever their count
         double[] disagree = new double[pixels];
@@ -91,10 +102,31 @@ final class ErrorProbe {
         }
         // a pixel beside one whose samples disagree may have missed the same edge with its fewer
         // samples: the 3 x 3 maximum of the spread over its own count (its error if its samples had
-        // disagreed as much)
+        // disagreed as much); and a pixel whose mean differs from a neighbour's by d may hide the edge
+        // between them: d^2 / 4 is the spread of a pixel that edge halves
         double[] weight = SampledRender.neighbourhoodMax(disagree, w, h);
+        double[] mean = new double[3 * pixels];
         for (int p = 0; p < pixels; p++) {
-            weight[p] /= film.count(p % w, p / w);
+            int n = film.count(p % w, p / w);
+            for (int c = 0; c < 3; c++) {
+                mean[3 * p + c] = Film.clamp(film.sum(p % w, p / w, c) / n);
+            }
+        }
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++) {
+                int p = y * w + x, n = film.count(x, y);
+                double contrast = 0;
+                for (int j = Math.max(0, y - 1); j <= Math.min(h - 1, y + 1); j++) {
+                    for (int i = Math.max(0, x - 1); i <= Math.min(w - 1, x + 1); i++) {
+                        int q = j * w + i;
+                        for (int c = 0; c < 3; c++) {
+                            double d = mean[3 * p + c] - mean[3 * q + c];
+                            contrast = Math.max(contrast, d * d);
+                        }
+                    }
+                }
+                weight[p] = Math.max(weight[p], contrast / 4 * 255 * 255) / n;
+            }
         }
         double sum = 0;
         for (double v : weight) {
@@ -102,7 +134,14 @@ final class ErrorProbe {
         }
         // a quarter of the probes spread by the floor alone, three quarters by the samples' disagreement
         double floor = sum > 0 ? sum / pixels / 3 : 1, total = sum + floor * pixels;
-        int m = halfSamples(ns), probes = probeCount(pixels, m);
+        // each probe set twice the samples of the pixel it judges (so it is as good or better), 16 to 2,048
+        int[] size = new int[pixels];
+        double expected = 0;
+        for (int p = 0; p < pixels; p++) {
+            size[p] = weight[p] > 0 ? halfSamples(film.count(p % w, p / w)) : CALM;
+            expected += (weight[p] + floor) / total * 2 * size[p];
+        }
+        int probes = probeCount(pixels, expected);
         // systematic sampling in scan order: a pixel is probed when the running sum of the chances
         // passes a whole number (shifted by one hashed offset); each pixel's chance is its own
         double[] chance = new double[pixels];
@@ -116,15 +155,17 @@ final class ErrorProbe {
             }
             running += c;
         }
-        // pixels whose neighbourhood's samples all agree are probed with few samples: their probes are
-        // as good (nothing varies) unless a feature was missed, which few samples show as well
-        int side = (int) Math.ceil(Math.sqrt(m));
-        SobolSampler a = new SobolSampler(side, SEED_A, m), b = new SobolSampler(side, SEED_B, m);
-        SobolSampler aCalm = new SobolSampler(4, SEED_A, CALM), bCalm = new SobolSampler(4, SEED_B, CALM);
+        // the two sets of each size in use (powers of two: index log2 m)
+        SobolSampler[] a = new SobolSampler[12], b = new SobolSampler[12];
         long samples = 0;
         for (int p = 0; p < pixels; p++) {
             if (chance[p] > 0) {
-                samples += 2L * (weight[p] > 0 ? m : CALM);
+                int m = size[p], k = Integer.numberOfTrailingZeros(m), side = (int) Math.ceil(Math.sqrt(m));
+                if (a[k] == null) {
+                    a[k] = new SobolSampler(side, SEED_A, m);
+                    b[k] = new SobolSampler(side, SEED_B, m);
+                }
+                samples += 2L * m;
             }
         }
         double[] contribution = new double[pixels];
@@ -139,8 +180,9 @@ final class ErrorProbe {
                             for (int x = x0; x < x1; x++) {
                                 int p = y * w + x;
                                 if (chance[p] > 0) {
-                                    mean(ctx, weight[p] > 0 ? a : aCalm, x, y, c, pa);
-                                    mean(ctx, weight[p] > 0 ? b : bCalm, x, y, c, pb);
+                                    int k = Integer.numberOfTrailingZeros(size[p]);
+                                    mean(ctx, a[k], x, y, c, pa);
+                                    mean(ctx, b[k], x, y, c, pb);
                                     contribution[p] = crossError(x, y, pa, pb) / chance[p];
                                 }
                             }

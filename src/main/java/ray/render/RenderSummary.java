@@ -29,6 +29,11 @@ public final class RenderSummary {
     public final double estimatedRmseLow, estimatedRmseHigh;
     /** What the estimate cost: the probes' samples over the image's pixels (not in {@link #meanSamplesPerPixel}). */
     public final double probeSamplesPerPixel;
+    /**
+     * The error (RMSE, 8-bit steps) below which {@link #estimatedRmse} is not resolved to a factor of
+     * 1.5: an estimate and a truth both below it agree that the error is below it (a twentieth of a step).
+     */
+    public static final double ESTIMATE_RESOLUTION = ErrorProbe.RESOLUTION;
     /** The film (null for the grid's fast path, which keeps no film). */
     public final Film film;
 

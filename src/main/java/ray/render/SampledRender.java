@@ -55,7 +55,7 @@ final class SampledRender {
             double[] first = new double[3 * b0 * scene.width * scene.height];
             pass(new FirstBatch(a, first), 0, 2);
             pass(new Adaptive(a, first, nudgedPixels()), 1, 2);
-            estimate = new ErrorProbe(this, renderer, scene, film, image).measure(a.side());
+            estimate = new ErrorProbe(this, renderer, scene, film, image).measure();
             return image;
         }
         int[] bounds = progressive ? passBounds(all) : new int[] {0, all};

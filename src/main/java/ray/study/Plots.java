@@ -68,7 +68,9 @@ final class Plots {
 
     /** The adaptive sampler's own error estimate against its true RMSE, all scenes in one plot. */
     static boolean honesty(List<SceneStudy.Outcome> outcomes, Path png) throws IOException {
-        XYChart c = new XYChartBuilder().width(760).height(520).title("adaptive: estimated against true image error")
+        // tall enough for a legend line per scene
+        XYChart c = new XYChartBuilder().width(760).height(Math.max(520, 21 * outcomes.size() + 140))
+                .title("adaptive: estimated against true image error")
                 .xAxisTitle("true RMSE (against the reference, its own noise taken out; 8-bit steps)").yAxisTitle("estimated RMSE (8-bit steps)").build();
         c.getStyler().setXAxisLogarithmic(true).setYAxisLogarithmic(true).setLegendPosition(Styler.LegendPosition.OutsideE)
                 .setChartBackgroundColor(Color.WHITE).setMarkerSize(7);

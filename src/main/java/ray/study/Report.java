@@ -9,6 +9,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import ray.render.RenderSummary;
 
 /** Writes a scene's CSV and the study's index.html, and words the findings as sentences. */
 final class Report {
@@ -104,11 +105,13 @@ final class Report {
 
     /**
      * The adaptive estimate's ratio to the true RMSE of row {@code r} (the reference's own noise taken
-     * out, {@link Reference#trueSteps}), or NaN without an estimate or a measurable error.
+     * out, {@link Reference#trueSteps}), both raised to the estimate's resolution
+     * ({@link RenderSummary#ESTIMATE_RESOLUTION}: below it, "under 0.05 steps" is all either says), or
+     * NaN without an estimate.
      */
     static double honesty(SceneStudy.Outcome o, Row r) {
-        double truth = o.ref().trueSteps(r.rmseSteps());
-        return Double.isNaN(r.estimatedRmseSteps()) || truth <= 0 ? Double.NaN : r.estimatedRmseSteps() / truth;
+        double res = RenderSummary.ESTIMATE_RESOLUTION, truth = o.ref().trueSteps(r.rmseSteps());
+        return Double.isNaN(r.estimatedRmseSteps()) ? Double.NaN : Math.max(res, r.estimatedRmseSteps()) / Math.max(res, truth);
     }
 
     /** The range of the adaptive estimate's ratio to the true RMSE, or null. */
@@ -122,6 +125,36 @@ final class Report {
             }
         }
         return hi == 0 ? null : new double[] {lo, hi};
+    }
+
+    /** One sentence on the adaptive estimate over all scenes: ratios, how many within 1.5, interval coverage. */
+    static String honestySummary(List<SceneStudy.Outcome> outcomes) {
+        List<Double> ratios = new ArrayList<>();
+        int within = 0, covered = 0, below = 0;
+        double cost = 0;
+        for (SceneStudy.Outcome o : outcomes) {
+            for (Row r : o.rows()) {
+                double q = honesty(o, r);
+                if (Double.isNaN(q)) {
+                    continue;
+                }
+                ratios.add(q);
+                within += q >= 1 / 1.5 && q <= 1.5 ? 1 : 0;
+                double truth = o.ref().trueSteps(r.rmseSteps());
+                covered += truth >= r.estimate().lowSteps() && truth <= r.estimate().highSteps() ? 1 : 0;
+                below += truth < RenderSummary.ESTIMATE_RESOLUTION ? 1 : 0;
+                cost += r.estimate().samplesPerPixel();
+            }
+        }
+        if (ratios.isEmpty()) {
+            return "";
+        }
+        java.util.Collections.sort(ratios);
+        int n = ratios.size();
+        return String.format(Locale.ROOT, "%d adaptive renders: estimate / true RMSE from %.2f to %.2f (median %.2f), %d of them within a "
+                + "factor of 1.5; the 95%% interval held the truth in %d; %d had a true error below the estimate's resolution of %s steps; "
+                + "the estimate cost %.1f samples per pixel on average.", n, ratios.get(0), ratios.get(n - 1), ratios.get(n / 2), within,
+                covered, below, RenderSummary.ESTIMATE_RESOLUTION, cost / n);
     }
 
     /** "sobol, two halves of n_s = 16 (512 samples per pixel); noise 0.02 steps; 0.05 steps from the level before". */
@@ -181,7 +214,8 @@ final class Report {
         b.append("</table>\n");
         if (honesty) {
             b.append("<h2>Does the adaptive sampler know its own error?</h2>\n<p>Each point is one adaptive render: the RMSE it ")
-                    .append("reported against the RMSE it really has. Points between the dashed lines are within a factor of 1.5.</p>\n")
+                    .append("reported against the RMSE it really has (the reference's noise taken out). Points between the dashed lines ")
+                    .append("are within a factor of 1.5. ").append(esc(honestySummary(outcomes))).append("</p>\n")
                     .append("<img src=\"adaptive-honesty.png\" alt=\"adaptive estimate against true error\">\n");
         }
         for (SceneStudy.Outcome o : outcomes) {
@@ -235,12 +269,15 @@ final class Report {
             return;
         }
         b.append("<p>Adaptive's own estimate against the truth (8-bit steps; true = RMSE against the reference with its noise of ")
-                .append(String.format(Locale.ROOT, "%.3f", o.ref().noiseSteps())).append(" taken out):</p>\n<table><tr><th>setting</th>")
+                .append(String.format(Locale.ROOT, "%.3f", o.ref().noiseSteps())).append(" taken out; the ratio takes both at least ")
+                .append(RenderSummary.ESTIMATE_RESOLUTION).append(" steps, the estimate's resolution):</p>\n<table><tr><th>setting</th>")
                 .append("<th>spp</th><th>estimate</th><th>95% interval</th><th>true</th><th>estimate / true</th><th>estimate cost (spp)</th></tr>\n");
         for (Row r : rows) {
-            b.append(String.format(Locale.ROOT, "<tr><td>%s</td><td>%.1f</td><td>%.3f</td><td>%.3f to %.3f</td><td>%.3f</td><td>%.2f</td><td>%.2f</td></tr>%n",
+            double truth = o.ref().trueSteps(r.rmseSteps()), res = RenderSummary.ESTIMATE_RESOLUTION;
+            b.append(String.format(Locale.ROOT, "<tr><td>%s</td><td>%.1f</td><td>%.3f</td><td>%.3f to %.3f</td><td>%.3f</td><td>%.2f%s</td><td>%.2f</td></tr>%n",
                     esc(r.setting().label()), r.meanSpp(), r.estimatedRmseSteps(), r.estimate().lowSteps(), r.estimate().highSteps(),
-                    o.ref().trueSteps(r.rmseSteps()), honesty(o, r), r.estimate().samplesPerPixel()));
+                    truth, honesty(o, r), truth < res && r.estimatedRmseSteps() < res ? " (both below " + res + ")" : "",
+                    r.estimate().samplesPerPixel()));
         }
         b.append("</table>\n");
     }

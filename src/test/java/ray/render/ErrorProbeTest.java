@@ -38,7 +38,7 @@ class ErrorProbeTest {
             Renderer r = new Renderer(scene).threads(2).settings(new RenderSettings().sampler("adaptive").samples(ns).targetError(1));
             r.render();
             SampledRender render = new SampledRender(r, scene, new AdaptiveSampler(ns), 1, false);
-            ErrorProbe.Estimate e = new ErrorProbe(render, r, scene, r.summary().film, converged).measure(ns);
+            ErrorProbe.Estimate e = new ErrorProbe(render, r, scene, r.summary().film, converged).measure();
             assertTrue(e.rmse() < 0.06, "n_s=" + ns + ": estimated " + e.rmse() + " for an image " + truth + " off");
             assertTrue(e.low() <= truth && truth <= e.high(), "n_s=" + ns + ": interval " + e.low() + " to " + e.high() + ", truth " + truth);
         }
@@ -61,16 +61,16 @@ class ErrorProbeTest {
     }
 
     @Test
-    void probesAreAPowerOfTwoAtLeastTwiceTheBudgetAndFewerAsTheyGrowDear() {
-        for (int ns = 1; ns <= 32; ns++) {
-            int m = ErrorProbe.halfSamples(ns);
-            assertEquals(1, Integer.bitCount(m), "n_s=" + ns + ": " + m);
-            assertTrue(m >= Math.min(2048, 2 * ns * ns) && m >= 16 && m <= 2048, "n_s=" + ns + ": " + m);
+    void probeSetsAreAPowerOfTwoAtLeastTwiceThePixelsSamplesAndTheirCountFitsTheBudget() {
+        for (int n = 1; n <= 4096; n++) {
+            int m = ErrorProbe.halfSamples(n);
+            assertEquals(1, Integer.bitCount(m), "n=" + n + ": " + m);
+            assertTrue(m >= Math.min(2048, 2 * n) && m >= 16 && m <= 2048 && (m == 16 || m / 2 < 2 * n), "n=" + n + ": " + m);
         }
-        assertEquals(1_000_000 / 64, ErrorProbe.probeCount(1_000_000, 32));
-        assertEquals(1_000_000 / 128, ErrorProbe.probeCount(1_000_000, 128));
-        assertEquals(512, ErrorProbe.probeCount(20_000, 32), "at least 512 cheap probes");
-        assertEquals(300, ErrorProbe.probeCount(300, 32), "never more than the pixels");
+        assertEquals((int) Math.round(ErrorProbe.BUDGET * 1_000_000 / 100.0), ErrorProbe.probeCount(1_000_000, 100), "the budget buys them");
+        assertEquals(1_000_000 / 8, ErrorProbe.probeCount(1_000_000, 1), "at most one pixel in 8");
+        assertEquals(256, ErrorProbe.probeCount(20_000, 1000), "at least 256");
+        assertEquals(100, ErrorProbe.probeCount(100, 1000), "never more than the pixels");
     }
 
     /** Seeds give independent images; seed 0 is the default, bit for bit. */

@@ -30,22 +30,24 @@ class SamplerTest {
         }
     }
 
-    /** Grid and jittered put exactly one sample in each of the n x n cells; jittered also in each pair of dimensions. */
+    /** Grid and jittered put exactly one sample in each of the n x n cells (any seed); jittered also in each pair of dimensions. */
     @ParameterizedTest
     @ValueSource(strings = {"grid", "jittered", "adaptive"})
     void oneSamplePerCell(String name) {
         for (int n : SIDES) {
-            Sampler s = Sampler.create(name, n);
-            int pairs = name.equals("jittered") ? 4 : 1;
-            for (int pair = 0; pair < pairs; pair++) {
-                for (int px = 0; px < 5; px++) {
-                    int[] hits = new int[n * n];
-                    for (int i = 0; i < n * n; i++) {
-                        double u = s.get(px, 3, i, 2 * pair), v = s.get(px, 3, i, 2 * pair + 1);
-                        hits[(int) (v * n) * n + (int) (u * n)]++;
-                    }
-                    for (int c = 0; c < n * n; c++) {
-                        assertEquals(1, hits[c], name + " n=" + n + " pair " + pair + " pixel " + px + ": cell " + c);
+            for (int seed : new int[] {0, 1, 2}) {
+                Sampler s = Sampler.create(name, n, seed);
+                int pairs = name.equals("jittered") ? 4 : 1;
+                for (int pair = 0; pair < pairs; pair++) {
+                    for (int px = 0; px < 5; px++) {
+                        int[] hits = new int[n * n];
+                        for (int i = 0; i < n * n; i++) {
+                            double u = s.get(px, 3, i, 2 * pair), v = s.get(px, 3, i, 2 * pair + 1);
+                            hits[(int) (v * n) * n + (int) (u * n)]++;
+                        }
+                        for (int c = 0; c < n * n; c++) {
+                            assertEquals(1, hits[c], name + " n=" + n + " seed " + seed + " pair " + pair + " pixel " + px + ": cell " + c);
+                        }
                     }
                 }
             }
@@ -76,20 +78,29 @@ class SamplerTest {
     @Test
     void sobolIsANetInEveryPairOfDimensions() {
         for (int n : new int[] {1, 2, 4, 8}) {
-            Sampler s = Sampler.create("sobol", n);
-            int all = n * n, m = Integer.numberOfTrailingZeros(all);
-            for (int pair = 0; pair < 3; pair++) {
-                for (int px = 0; px < 4; px++) {
-                    for (int k = 0; k <= m; k++) {
-                        int[] hits = new int[all];
-                        for (int i = 0; i < all; i++) {
-                            int a = (int) (s.get(px, 11, i, 2 * pair) * (1 << k));
-                            int b = (int) (s.get(px, 11, i, 2 * pair + 1) * (1 << (m - k)));
-                            hits[b * (1 << k) + a]++;
-                        }
-                        for (int c = 0; c < all; c++) {
-                            assertEquals(1, hits[c], "n=" + n + " pair " + pair + " pixel " + px + " boxes 2^" + k + " x 2^" + (m - k));
-                        }
+            for (int seed : new int[] {0, 7}) {
+                assertNet(Sampler.create("sobol", n, seed), n * n, "n=" + n + " seed " + seed);
+            }
+        }
+        // the error probes' sets: the first 2^m of a larger sequence, in every pair too
+        for (int m : new int[] {16, 32, 128}) {
+            assertNet(new SobolSampler(16, 0xe770be, m), m, "probe set of " + m);
+        }
+    }
+
+    private static void assertNet(Sampler s, int all, String what) {
+        int m = Integer.numberOfTrailingZeros(all);
+        for (int pair = 0; pair < 3; pair++) {
+            for (int px = 0; px < 4; px++) {
+                for (int k = 0; k <= m; k++) {
+                    int[] hits = new int[all];
+                    for (int i = 0; i < all; i++) {
+                        int a = (int) (s.get(px, 11, i, 2 * pair) * (1 << k));
+                        int b = (int) (s.get(px, 11, i, 2 * pair + 1) * (1 << (m - k)));
+                        hits[b * (1 << k) + a]++;
+                    }
+                    for (int c = 0; c < all; c++) {
+                        assertEquals(1, hits[c], what + " pair " + pair + " pixel " + px + " boxes 2^" + k + " x 2^" + (m - k));
                     }
                 }
             }

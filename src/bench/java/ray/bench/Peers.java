@@ -1,0 +1,115 @@
+package ray.bench;
+
+import java.io.PrintStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+
+/**
+ * The peer renderers of the shared bench directory (POV-Ray, Tachyon, Sunflow, Mitsuba 3), run the way
+ * {@code peers/run_peers.sh} runs them, and the ratio table of {@code gradle bench --peers}.
+ */
+final class Peers {
+
+    static final List<String> ALL = List.of("pov", "tachyon", "sunflow", "mitsuba_llvm");
+    static final Map<String, String> NAMES = Map.of(
+            "pov", "POV-Ray 3.7", "tachyon", "Tachyon", "sunflow", "Sunflow (Java)", "mitsuba_llvm", "Mitsuba 3 (LLVM)");
+
+    private final Path benchDir;
+    private final Path work;
+    private final List<String> scenes;
+
+    Peers(Path benchDir, Path work, List<String> scenes) {
+        this.benchDir = benchDir;
+        this.work = work;
+        this.scenes = scenes;
+    }
+
+    /** The Python of the peers' venv ($VENV, default peers/.venv in the bench directory). */
+    Path venvPython() {
+        String v = System.getenv("VENV");
+        Path venv = v != null && !v.isEmpty() ? Path.of(v) : benchDir.resolve("peers/.venv");
+        if (!venv.isAbsolute()) {
+            venv = benchDir.resolve(venv);
+        }
+        return venv.resolve("bin/python");
+    }
+
+    /** Whether peer {@code p} is installed and its scenes translated. */
+    boolean available(String p) {
+        String first = scenes.get(0);
+        switch (p) {
+            case "pov":
+                return onPath("povray") && Files.isRegularFile(benchDir.resolve("peers/build/pov/" + first + ".pov"));
+            case "tachyon":
+                return onPath("tachyon-nox") && Files.isRegularFile(benchDir.resolve("peers/build/tachyon/" + first + ".dat"));
+            case "sunflow":
+                return Files.isRegularFile(Path.of("/usr/share/java/sunflow.jar"))
+                        && Files.isRegularFile(benchDir.resolve("peers/sunflow/SunflowRender.class"))
+                        && Files.isRegularFile(benchDir.resolve("peers/build/sunflow/" + first + ".sc"));
+            default:
+                return Files.isExecutable(venvPython()) && Files.isRegularFile(benchDir.resolve("peers/build/mitsuba/" + first + ".xml"));
+        }
+    }
+
+    /** The command line run_peers.sh uses for a peer (run in the bench directory). */
+    List<String> command(String p, String s) {
+        String png = work.resolve("peer_" + p + ".png").toAbsolutePath().toString();
+        switch (p) {
+            case "pov":
+                return List.of("povray", "peers/build/pov/" + s + ".ini", "+Ipeers/build/pov/" + s + ".pov", "+O" + png);
+            case "tachyon":
+                return List.of("tachyon-nox", "peers/build/tachyon/" + s + ".dat", "-format", "PNG", "-o", png);
+            case "sunflow":
+                return List.of("java", "-cp", "/usr/share/java/sunflow.jar:peers/sunflow", "SunflowRender",
+                        "peers/build/sunflow/" + s + ".sc", png);
+            default:
+                return List.of(venvPython().toString(), "peers/mitsuba_whitted.py", "llvm_ad_rgb", "peers/build/mitsuba/" + s + ".xml", png);
+        }
+    }
+
+    private static boolean onPath(String exe) {
+        String path = System.getenv("PATH");
+        if (path == null) {
+            return false;
+        }
+        for (String d : path.split(":")) {
+            if (!d.isEmpty() && Files.isExecutable(Path.of(d, exe))) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** The ratio table: this program's median wall time over each peer's, scene by scene. */
+    void printTable(PrintStream out, int runs, Map<String, Map<String, List<Double>>> times, java.util.Set<String> peers) {
+        out.println("## Against the peers (whole process, median of " + runs + ", interleaved in the same rounds)");
+        out.println();
+        StringBuilder h = new StringBuilder("| scene | raytracer s |");
+        StringBuilder sep = new StringBuilder("|---|---:|");
+        for (String p : peers) {
+            h.append(' ').append(NAMES.get(p)).append(" s | ratio |");
+            sep.append("---:|---:|");
+        }
+        out.println(h);
+        out.println(sep);
+        for (String s : scenes) {
+            Map<String, List<Double>> t = times.get(s);
+            if (t == null) {
+                continue;
+            }
+            double ours = Bench.median(t.getOrDefault("raytracer", List.of()));
+            StringBuilder row = new StringBuilder(String.format(Locale.ROOT, "| %s | %.2f |", s, ours));
+            for (String p : peers) {
+                double theirs = Bench.median(t.getOrDefault(p, List.of()));
+                row.append(String.format(Locale.ROOT, " %.2f | %.2f |", theirs, ours / theirs));
+            }
+            out.println(row);
+        }
+        out.println();
+        out.println("ratio = raytracer's median / the peer's median: below 1 the raytracer was faster.");
+        out.println();
+    }
+}
