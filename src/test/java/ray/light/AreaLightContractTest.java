@@ -7,7 +7,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.ArrayList;
 import javax.vecmath.Vector3d;
 import org.junit.jupiter.api.Test;
-import ray.Camera;
 import ray.IntersectionRecord;
 import ray.Scene;
 import ray.TraceContext;
@@ -24,16 +23,11 @@ import ray.render.Sampler;
 class AreaLightContractTest {
 
     private static Scene empty() {
-        Scene s = new Scene();
-        s.camera = new Camera();
-        return s;
+        return LightSampleContractTest.empty();
     }
 
     private static IntersectionRecord at(double x, double y, double z) {
-        IntersectionRecord rec = new IntersectionRecord();
-        rec.location.set(x, y, z);
-        rec.normal.set(0, 1, 0);
-        return rec;
+        return LightSampleContractTest.at(x, y, z);
     }
 
     private static AreaLight oblique(int n) {

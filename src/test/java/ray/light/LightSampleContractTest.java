@@ -19,14 +19,14 @@ import ray.Scene;
  */
 class LightSampleContractTest {
 
-    private static IntersectionRecord at(double x, double y, double z) {
+    static IntersectionRecord at(double x, double y, double z) {
         IntersectionRecord rec = new IntersectionRecord();
         rec.location.set(x, y, z);
         rec.normal.set(0, 0, 1);
         return rec;
     }
 
-    private static Scene empty() {
+    static Scene empty() {
         Scene s = new Scene();
         s.camera = new Camera();
         return s;
