@@ -13,6 +13,19 @@ public final class Aabb {
         this.maxX = maxX; this.maxY = maxY; this.maxZ = maxZ;
     }
 
+    /** Makes this box empty again (what {@code new Aabb()} is) and returns it, for reuse without allocating. */
+    public Aabb reset() {
+        return set(Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
+                Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY);
+    }
+
+    /** Sets all six bounds and returns this box. */
+    public Aabb set(double minX, double minY, double minZ, double maxX, double maxY, double maxZ) {
+        this.minX = minX; this.minY = minY; this.minZ = minZ;
+        this.maxX = maxX; this.maxY = maxY; this.maxZ = maxZ;
+        return this;
+    }
+
     public static Aabb infinite() {
         double i = Double.POSITIVE_INFINITY;
         return new Aabb(-i, -i, -i, i, i, i);

@@ -181,11 +181,12 @@ public final class Bvh implements Accelerator {
         List<Surface> bounded = new ArrayList<>(surfaces.size());
         List<Surface> unbounded = new ArrayList<>();
         double[] box = new double[6 * surfaces.size()];
+        Aabb scratch = new Aabb();
         for (Surface s : surfaces) {
             if (s.isDegenerate()) {
                 continue;
             }
-            Aabb a = s.bounds();
+            Aabb a = typeOf(s).bounds(s, scratch);   // a built-in type writes it into scratch: no box per primitive
             if (a.isFinite()) {
                 int i = bounded.size();
                 box[6 * i] = a.minX; box[6 * i + 1] = a.minY; box[6 * i + 2] = a.minZ;

@@ -166,15 +166,18 @@ final class BvhBuilder {
             return leaf(start, n);
         }
         int mid = -1;
-        float[] lb = new float[6], rb = new float[6], lc = new float[6], rc = new float[6];
+        float[] lb, rb, lc, rc;   // the children's boxes and centroid bounds, made once a split is certain
         if (depth < SAH_DEPTH && findSplit(start, end, cent, s)) {
             float leafCost = n;
             if (n <= MAX_LEAF && leafCost <= s.cost) {
                 return leaf(start, n);
             }
+            lb = new float[6]; rb = new float[6]; lc = new float[6]; rc = new float[6];
             mid = partition(start, end, cent, s, lb, rb, lc, rc);
         } else if (n <= MAX_LEAF && depth < SAH_DEPTH) {
             return leaf(start, n);   // all centroids coincide: nothing to gain from splitting
+        } else {
+            lb = new float[6]; rb = new float[6]; lc = new float[6]; rc = new float[6];
         }
         if (mid < 0) {
             // no SAH split (coincident centroids or too deep): halve by count, balanced

@@ -24,6 +24,15 @@ public abstract class PrimitiveSet {
     /** Makes a set from surfaces of one type, in leaf order. One shared instance per type. */
     public interface Type {
         PrimitiveSet pack(List<Surface> surfaces);
+
+        /**
+         * {@code s.bounds()}, which a type may write into {@code scratch} instead of allocating a box per
+         * primitive (the BVH build reads it before asking again). Only for surfaces of this type, which
+         * is only ever returned for the exact class whose bounds it knows.
+         */
+        default Aabb bounds(Surface s, Aabb scratch) {
+            return s.bounds();
+        }
     }
 
     private int id, bit;

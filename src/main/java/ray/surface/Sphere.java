@@ -66,8 +66,14 @@ public class Sphere extends Surface {
 
     @Override
     public Aabb bounds() {
-        return new Aabb(center.x - radius, center.y - radius, center.z - radius,
-                center.x + radius, center.y + radius, center.z + radius);
+        return bounds(this, new Aabb());
+    }
+
+    /** {@code s}'s box, written into {@code box}. */
+    static Aabb bounds(Sphere s, Aabb box) {
+        Vector3d c = s.center;
+        double r = s.radius;
+        return box.set(c.x - r, c.y - r, c.z - r, c.x + r, c.y + r, c.z + r);
     }
 
     /** The nearest t in [tMin, tMax] where the ray meets the sphere, or NaN. */

@@ -2,6 +2,7 @@ package ray.surface;
 
 import java.util.List;
 import ray.IntersectionRecord;
+import ray.accel.Aabb;
 import ray.accel.PrimitiveSet;
 import ray.accel.RayQuery;
 
@@ -12,6 +13,11 @@ final class SphereSet extends PrimitiveSet {
         @Override
         public PrimitiveSet pack(List<Surface> surfaces) {
             return new SphereSet(surfaces);
+        }
+
+        @Override
+        public Aabb bounds(Surface s, Aabb scratch) {   // Sphere.bounds() without a new box
+            return Sphere.bounds((Sphere) s, scratch);
         }
     };
 

@@ -84,11 +84,15 @@ public class Triangle extends Surface {
 
     @Override
     public Aabb bounds() {
-        Aabb b = new Aabb();
-        b.include(v0.x, v0.y, v0.z);
-        b.include(v1.x, v1.y, v1.z);
-        b.include(v2.x, v2.y, v2.z);
-        return b;
+        return bounds(this, new Aabb());
+    }
+
+    /** {@code t}'s box: {@code empty} (an empty box) grown to its three vertices. */
+    static Aabb bounds(Triangle t, Aabb empty) {
+        empty.include(t.v0.x, t.v0.y, t.v0.z);
+        empty.include(t.v1.x, t.v1.y, t.v1.z);
+        empty.include(t.v2.x, t.v2.y, t.v2.z);
+        return empty;
     }
 
     // ---- the watertight kernel, the one the BVH uses too (TriangleSet; vertices packed 9 doubles each) ----

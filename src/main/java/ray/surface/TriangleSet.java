@@ -2,6 +2,7 @@ package ray.surface;
 
 import java.util.List;
 import ray.IntersectionRecord;
+import ray.accel.Aabb;
 import ray.accel.PrimitiveSet;
 import ray.accel.RayQuery;
 
@@ -16,6 +17,11 @@ final class TriangleSet extends PrimitiveSet {
         @Override
         public PrimitiveSet pack(List<Surface> surfaces) {
             return new TriangleSet(surfaces);
+        }
+
+        @Override
+        public Aabb bounds(Surface s, Aabb scratch) {   // Triangle.bounds() without a new box
+            return Triangle.bounds((Triangle) s, scratch.reset());
         }
     };
 

@@ -161,6 +161,12 @@ class BvhLayoutTest {
             assertEquals(3, rec.t, 0);
             assertSame(p0, rec.surface, "of three hits at t = 3, the one in the earliest slot");
         }
+        // offered in slot order (set A's run, then set B's): an equal hit in a later slot does not take over
+        Probe b3 = new Probe(B, 3);
+        Bvh mixed = Bvh.build(new ArrayList<>(List.of(p0, b3)), scene());
+        IntersectionRecord first = new IntersectionRecord();
+        assertTrue(mixed.closestHit(down(), first, new TraceContext(2)));
+        assertSame(p0, first.surface, "the earlier slot keeps an equal-t hit offered after it");
         // a nearer hit in a later slot still wins
         Probe near = new Probe(A, 2.5);
         Bvh bvh = Bvh.build(new ArrayList<>(List.of(p0, p1, near)), scene());
