@@ -90,6 +90,9 @@ class AxialEdgeTest {
         // the reverse: in through the base, out through the side
         assertHit(cone, ray(1, -0.5, 0, -1, 1, 0), 0.5, v(0.5, 0, 0), v(0, -1, 0), true);
         assertHit(cone, span(ray(1, -0.5, 0, -1, 1, 0), 1, 10), 1.25, v(-0.25, 0.75, 0), v(S, -S, 0), false);
+        // the same rays with a direction twice as long: the linear root divides by the direction's scale
+        assertHit(cone, ray(-1, 1.5, 0, 2, -2, 0), 0.375, v(-0.25, 0.75, 0), v(-S, S, 0), true);
+        assertHit(cone, span(ray(1, -0.5, 0, -2, 2, 0), 0.5, 10), 0.625, v(-0.25, 0.75, 0), v(S, -S, 0), false);
         // parallel to the slope line, above the apex: only the upper nappe, which is not part of the solid
         assertMiss(cone, ray(0, 1.5, 0, 1, -1, 0));
         assertMiss(cone, ray(0, 1.5, 0, -1, 1, 0));
@@ -106,6 +109,14 @@ class AxialEdgeTest {
     void coneRayAlongItsOwnSlopeLineEntersAtTheRim() {
         // the line x + y = 1, z = 0 lies on the side: the closed solid holds it from the base rim to the apex
         assertHit(cone, ray(1.5, -0.5, 0, -1, 1, 0), 0.5, v(1, 0, 0), v(0, -1, 0), true);
+    }
+
+    @Test
+    void coneRimCrossingCountsAsTheSide() {
+        // entering from below at the base rim (1, 0, 0), side and base at t = 1: the side's normal
+        assertHit(cone, ray(2, -0.5, 0, -1, 0.5, 0), 1, v(1, 0, 0), v(S, S, 0), true);
+        // leaving through the base rim (1, 0, 0) from inside: the side's normal, turned to the ray
+        assertHit(cone, ray(0, 0.5, 0, 1, -0.5, 0), 1, v(1, 0, 0), v(-S, -S, 0), false);
     }
 
     @Test
@@ -160,6 +171,15 @@ class AxialEdgeTest {
                 assertEquals(hi, max[i], 1e-9, "max " + i + " of " + s + ": " + b);
                 assertTrue(min[i] < lo && max[i] > hi, "the box is padded outward: " + b);
             }
+        }
+        // padded by more than rounding (relative 1e-13 of the solid's size and place), also for a solid wider
+        // than it is tall or far away
+        for (AxialSurface s : new AxialSurface[] {CylinderTest.cylinder(0, 0, 0, 0, 1, 0, 10),
+                CylinderTest.cylinder(1e6, 0, 0, 0, 1, 0, 2), ConeTest.cone(0, 0, 0, 0, 1, 0, 10)}) {
+            Aabb b = s.bounds();
+            double scale = Math.abs(s.base.x) + s.radius + 1;
+            assertTrue(b.minY < -1e-13 * scale && b.maxY > 1 + 1e-13 * scale, "padded in y: " + b + " of " + s);
+            assertTrue(b.minZ < -s.radius - 1e-13 * scale && b.maxZ > s.radius + 1e-13 * scale, "padded in z: " + b);
         }
     }
 

@@ -55,6 +55,13 @@ class FlatEdgeTest {
     }
 
     @Test
+    void boxRayTouchingOnlyAnEdgeHitsIt() {
+        // (-2, -1, 0) + t (1, -1, 0) touches the edge x = -1, y = -2 at t = 1 and nothing else: the box is closed
+        assertHit(box(), ray(-2, -1, 0, 1, -1, 0), 1, v(-1, -2, 0), v(-1, 0, 0), true);
+        assertMiss(box(), ray(-2, Math.nextDown(-1.0), 0, 1, -1, 0));
+    }
+
+    @Test
     void boxSpanEndsExactlyAtACrossing() {
         Box b = box();
         // along x through the middle: enters the x = -1 face at t = 4, leaves the x = 1 face at t = 6
@@ -82,8 +89,8 @@ class FlatEdgeTest {
     @Test
     void boxRefusesNonFiniteOrFlatCorners() {
         Box b = new Box();
-        b.minPoint = v(Double.NaN, 0, 0);
-        assertTrue(initMessage(b).contains("box minPoint"), initMessage(b));
+        b.minPoint = v(Double.NEGATIVE_INFINITY, 0, 0);   // below maxPoint, so only the finiteness check refuses it
+        assertTrue(initMessage(b).contains("box minPoint") && !initMessage(b).contains("below"), initMessage(b));
         b = new Box();
         b.maxPoint = v(1, Double.POSITIVE_INFINITY, 1);
         assertTrue(initMessage(b).contains("box maxPoint"), initMessage(b));
@@ -134,6 +141,14 @@ class FlatEdgeTest {
             assertEquals(c[i] - e, min[i], 1e-9, "min " + i + " of " + b);
             assertEquals(c[i] + e, max[i], 1e-9, "max " + i + " of " + b);
             assertTrue(min[i] < c[i] - e && max[i] > c[i] + e, "padded outward: " + b);
+        }
+        // padded by more than rounding (relative 1e-13 of the disc's size and place), also when the radius
+        // is larger than the distance from the origin, and far from the origin
+        for (Disc d : new Disc[] {disc(0, 0, 0, 0, 1, 0, 5), disc(1e6, 0, 0, 0, 1, 0, 2)}) {
+            Aabb a = d.bounds();
+            double scale = Math.abs(d.center.x) + d.radius;
+            assertTrue(a.minY < -1e-13 * scale && a.maxY > 1e-13 * scale, "padded in y: " + a + " of " + d);
+            assertTrue(a.minZ < -d.radius - 1e-13 * scale && a.maxZ > d.radius + 1e-13 * scale, "padded in z: " + a);
         }
     }
 
