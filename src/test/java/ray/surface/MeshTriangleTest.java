@@ -70,6 +70,18 @@ class MeshTriangleTest {
     }
 
     @Test
+    void packedSetHoldsEachTriangleOnceWithItsMesh() throws Exception {
+        Mesh m = mesh(1);
+        List<Surface> t = triangles(m);
+        ray.accel.PrimitiveSet set = t.get(0).primitiveType().pack(t);
+        assertEquals(2, set.size());
+        assertSame(m, set.surface(0));
+        assertSame(m, set.surface(1));
+        // nine doubles of corners and two ints (mesh, index) per triangle
+        assertEquals(2 * (9 * 8 + 4 + 4), set.memoryBytes());
+    }
+
+    @Test
     void ownHitAgreesWithTheMeshs() throws Exception {
         long seed = 11;
         Random rnd = new Random(seed);
