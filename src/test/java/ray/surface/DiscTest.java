@@ -13,7 +13,7 @@ import ray.accel.Aabb;
 /** The two-sided disc against numbers worked out by hand. */
 class DiscTest {
 
-    private static Disc disc(double cx, double cy, double cz, double nx, double ny, double nz, double r) {
+    static Disc disc(double cx, double cy, double cz, double nx, double ny, double nz, double r) {
         Disc d = new Disc();
         d.center = v(cx, cy, cz);
         d.normal = v(nx, ny, nz);

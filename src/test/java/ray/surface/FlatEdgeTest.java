@@ -104,18 +104,9 @@ class FlatEdgeTest {
 
     // ---- disc: radius 1 around the origin in the plane y = 0 unless said ----
 
-    private static Disc disc(double cx, double cy, double cz, double nx, double ny, double nz, double r) {
-        Disc d = new Disc();
-        d.center = v(cx, cy, cz);
-        d.normal = v(nx, ny, nz);
-        d.radius = r;
-        d.init();
-        return d;
-    }
-
     @Test
     void discRimBelongsToTheDisc() {
-        Disc d = disc(0, 0, 0, 0, 1, 0, 1);
+        Disc d = DiscTest.disc(0, 0, 0, 0, 1, 0, 1);
         assertHit(d, ray(1, 1, 0, 0, -1, 0), 1, v(1, 0, 0), v(0, 1, 0), true);
         assertHit(d, ray(0, 1, -1, 0, -1, 0), 1, v(0, 0, -1), v(0, 1, 0), true);
         assertMiss(d, ray(Math.nextUp(1.0), 1, 0, 0, -1, 0));
@@ -123,7 +114,7 @@ class FlatEdgeTest {
 
     @Test
     void discSpanEndsExactlyAtTheCrossing() {
-        Disc d = disc(0, 0, 0, 0, 1, 0, 1);
+        Disc d = DiscTest.disc(0, 0, 0, 0, 1, 0, 1);
         assertHit(d, span(ray(0.5, 2, 0, 0, -1, 0), 2, 10), 2, v(0.5, 0, 0), v(0, 1, 0), true);
         assertHit(d, span(ray(0.5, 2, 0, 0, -1, 0), 0, 2), 2, v(0.5, 0, 0), v(0, 1, 0), true);
         assertMiss(d, span(ray(0.5, 2, 0, 0, -1, 0), Math.nextUp(2.0), 10));
@@ -133,7 +124,7 @@ class FlatEdgeTest {
     @Test
     void boxOfAnObliqueDiscIsTheAnalyticOne() {
         // normal (1, 2, 2) / 3 at (1, -2, 3), radius 2: the rim's extent along axis i is 2 sqrt(1 - n_i^2)
-        Aabb b = disc(1, -2, 3, 1, 2, 2, 2).bounds();
+        Aabb b = DiscTest.disc(1, -2, 3, 1, 2, 2, 2).bounds();
         double[] n = {1 / 3.0, 2 / 3.0, 2 / 3.0}, c = {1, -2, 3};
         double[] min = {b.minX, b.minY, b.minZ}, max = {b.maxX, b.maxY, b.maxZ};
         for (int i = 0; i < 3; i++) {
@@ -144,7 +135,7 @@ class FlatEdgeTest {
         }
         // padded by more than rounding (relative 1e-13 of the disc's size and place), also when the radius
         // is larger than the distance from the origin, and far from the origin
-        for (Disc d : new Disc[] {disc(0, 0, 0, 0, 1, 0, 5), disc(1e6, 0, 0, 0, 1, 0, 2)}) {
+        for (Disc d : new Disc[] {DiscTest.disc(0, 0, 0, 0, 1, 0, 5), DiscTest.disc(1e6, 0, 0, 0, 1, 0, 2)}) {
             Aabb a = d.bounds();
             double scale = Math.abs(d.center.x) + d.radius;
             assertTrue(a.minY < -1e-13 * scale && a.maxY > 1e-13 * scale, "padded in y: " + a + " of " + d);
@@ -184,7 +175,7 @@ class FlatEdgeTest {
         // NaN for "parallel", not a t: a span from 0 must not take a parallel ray as a hit at its origin
         assertMiss(plane(), span(ray(0, 7, 0, 1, 0, 0), 0, 10));
         assertMiss(plane(), span(ray(0, 5, 0, 1, 0, 0), 0, 10));
-        assertMiss(disc(0, 0, 0, 0, 1, 0, 1), span(ray(0, 1, 0, 1, 0, 0), 0, 10));
+        assertMiss(DiscTest.disc(0, 0, 0, 0, 1, 0, 1), span(ray(0, 1, 0, 1, 0, 0), 0, 10));
     }
 
     @Test

@@ -3,7 +3,6 @@ package ray.surface;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
@@ -32,15 +31,7 @@ class MeshSmoothTest {
     Path dir;
 
     private Mesh mesh(String obj, int smooth, int twoSided) throws Exception {
-        Files.writeString(dir.resolve("s.obj"), obj);
-        Mesh m = new Mesh();
-        m.file = "s.obj";
-        m.smooth = smooth;
-        m.twoSided = twoSided;
-        m.material = CSGTest.material();
-        m.init();
-        m.readFiles(dir);
-        return m;
+        return MeshTest.mesh(dir, obj, smooth, twoSided);
     }
 
     @Test

@@ -27,6 +27,11 @@ class MeshTest {
     private final Scene scene = new Scene();
 
     private Mesh mesh(String obj, int smooth, int twoSided) throws IOException, SceneFormatException {
+        return mesh(dir, obj, smooth, twoSided);
+    }
+
+    /** A mesh read from {@code obj} written into {@code dir} as m.obj, with the test material. */
+    static Mesh mesh(Path dir, String obj, int smooth, int twoSided) throws IOException, SceneFormatException {
         Files.writeString(dir.resolve("m.obj"), obj);
         Mesh m = new Mesh();
         m.file = "m.obj";

@@ -5,7 +5,6 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -32,14 +31,7 @@ class MeshTriangleTest {
     private static final String QUAD = "v 0 0 0\nv 2 0 1\nv 2 3 1\nv 0 3 0\nf 1 2 3\nf 1 3 4\n";
 
     private Mesh mesh(int twoSided) throws Exception {
-        Files.writeString(dir.resolve("q.obj"), QUAD);
-        Mesh m = new Mesh();
-        m.file = "q.obj";
-        m.twoSided = twoSided;
-        m.material = CSGTest.material();
-        m.init();
-        m.readFiles(dir);
-        return m;
+        return MeshTest.mesh(dir, QUAD, 0, twoSided);
     }
 
     private static List<Surface> triangles(Mesh m) {
