@@ -222,7 +222,7 @@ public final class PngWriter {
         }
     }
 
-    private static long pid;
+    private static volatile long pid;   // volatile: a long written by one thread may otherwise be read torn by another
 
     /**
      * This process's id: the target of /proc/self on Linux (ProcessHandle's first use sets up its
