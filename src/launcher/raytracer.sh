@@ -39,15 +39,31 @@ fi
 CLASSPATH=@CLASSPATH@
 DEFAULT_JVM_OPTS=@DEFAULT_JVM_OPTS@
 
-# Class-data sharing (docs/performance.md): skipped when missing, ignored by the JVM when stale.
-if [ -f "$APP_HOME/lib/raytracer.jsa" ] && [ -z "$RAYTRACER_NO_CDS" ]; then
-    DEFAULT_JVM_OPTS="$DEFAULT_JVM_OPTS \"-XX:SharedArchiveFile=$APP_HOME/lib/raytracer.jsa\" \"-Xlog:cds*=off\""
-fi
-
 # Whether stderr and stdout are terminals (the progress bar goes to stderr only when it is one; Java's
 # System.console() asks about stdin and stdout together). `[` is a shell builtin: no process start.
 if [ -t 2 ]; then tty2=true; else tty2=false; fi
 if [ -t 1 ]; then tty1=true; else tty1=false; fi
 
-eval "set -- $DEFAULT_JVM_OPTS $JAVA_OPTS $RAYTRACER_OPTS -Draytracer.stderrTty=$tty2 -Draytracer.stdoutTty=$tty1 -classpath \"\$CLASSPATH\" @MAIN@ \"\$@\""
+# The java command line, built last argument first. Nothing taken from a path (the installation's
+# folder, the class path) ever passes through `eval`: an installation under a folder named
+# x$(touch PWNED)y or a"b starts like any other (the launcher test installs under such names).
+set -- -classpath "$CLASSPATH" @MAIN@ "$@"
+set -- "-Draytracer.stderrTty=$tty2" "-Draytracer.stdoutTty=$tty1" "$@"
+
+# JAVA_OPTS and RAYTRACER_OPTS: split as Gradle's own script splits them (xargs honours quotes), then
+# every character that is not plainly safe is escaped, so no `$`, backquote or `;` in them runs
+# anything. Only when set: the common start makes no extra process.
+if [ -n "$JAVA_OPTS$RAYTRACER_OPTS" ]; then
+    user_opts=$(printf '%s\n' "$JAVA_OPTS $RAYTRACER_OPTS" | xargs -n1 | sed 's~[^-[:alnum:]+,./:=@_]~\\&~g' | tr '\n' ' ') || exit 1
+    eval "set -- $user_opts \"\$@\""
+fi
+
+# Class-data sharing (docs/performance.md): skipped when missing, ignored by the JVM when stale. The
+# archive's path is one quoted argument, never read again by the shell.
+if [ -f "$APP_HOME/lib/raytracer.jsa" ] && [ -z "$RAYTRACER_NO_CDS" ]; then
+    set -- "-XX:SharedArchiveFile=$APP_HOME/lib/raytracer.jsa" "-Xlog:cds*=off" "$@"
+fi
+
+# The build's own JVM options: a constant the build writes here (quoted words, no path in it).
+eval "set -- $DEFAULT_JVM_OPTS \"\$@\""
 exec "$JAVACMD" "$@"

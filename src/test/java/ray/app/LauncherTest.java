@@ -1,0 +1,136 @@
+package ray.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.io.File;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.FileVisitResult;
+import java.nio.file.Files;
+import java.nio.file.LinkOption;
+import java.nio.file.Path;
+import java.nio.file.SimpleFileVisitor;
+import java.nio.file.StandardCopyOption;
+import java.nio.file.attribute.BasicFileAttributes;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.TimeUnit;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * The installed start script, bin/raytracer (src/launcher/raytracer.sh), installed under folder names a
+ * shell would misread: a command substitution, quotes, a backslash, a semicolon, spaces. The script
+ * must start the renderer from there, run none of those fragments, and split JAVA_OPTS as Gradle's own
+ * script does (quotes honoured, nothing evaluated). The build installs the distribution before the tests
+ * run and names it in the system property {@code ray.test.installHome}.
+ */
+@Tag("slow")
+class LauncherTest {
+
+    @TempDir
+    Path dir;
+
+    /** Every character a shell treats specially in one folder name, and a command substitution. */
+    static final String HOSTILE = "x$(touch PWNED)y `touch PWNED2` a\"b'c;d\\e $HOME *";
+
+    private static Path installHome() {
+        String home = System.getProperty("ray.test.installHome");
+        assumeTrue(home != null && !System.getProperty("os.name").toLowerCase().contains("windows"),
+                "the build names the installed distribution (gradle test installs it first)");
+        Path p = Path.of(home);
+        assertTrue(Files.isExecutable(p.resolve("bin/raytracer")), "installed launcher at " + p);
+        return p;
+    }
+
+    private static void copyTree(Path from, Path to) throws IOException {
+        Files.walkFileTree(from, new SimpleFileVisitor<>() {
+            @Override
+            public FileVisitResult preVisitDirectory(Path d, BasicFileAttributes a) throws IOException {
+                Files.createDirectories(to.resolve(from.relativize(d).toString()));
+                return FileVisitResult.CONTINUE;
+            }
+
+            @Override
+            public FileVisitResult visitFile(Path f, BasicFileAttributes a) throws IOException {
+                Files.copy(f, to.resolve(from.relativize(f).toString()), StandardCopyOption.COPY_ATTRIBUTES);
+                return FileVisitResult.CONTINUE;
+            }
+        });
+    }
+
+    private record Run(int status, String out, String err) {
+    }
+
+    private Run run(Path script, Path workDir, Map<String, String> env, String... args) throws Exception {
+        List<String> cmd = new ArrayList<>();
+        cmd.add(script.toString());
+        cmd.addAll(List.of(args));
+        ProcessBuilder pb = new ProcessBuilder(cmd).directory(workDir.toFile());
+        pb.environment().remove("JAVA_OPTS");
+        pb.environment().remove("RAYTRACER_OPTS");
+        pb.environment().put("JAVA_HOME", System.getProperty("java.home"));
+        pb.environment().putAll(env);
+        pb.redirectInput(ProcessBuilder.Redirect.from(new File("/dev/null")));
+        Path err = dir.resolve("stderr.log");
+        pb.redirectError(err.toFile());
+        Process p = pb.start();
+        String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        assertTrue(p.waitFor(60, TimeUnit.SECONDS), "the launcher ended");
+        String e = Files.readString(err, StandardCharsets.UTF_8);
+        Files.delete(err);
+        return new Run(p.exitValue(), out, e);
+    }
+
+    private void assertNothingRan() throws IOException {
+        try (Stream<Path> all = Files.walk(dir)) {
+            assertFalse(all.anyMatch(p -> p.getFileName().toString().startsWith("PWNED")), "no shell fragment ran");
+        }
+    }
+
+    @Test
+    void startsFromAFolderWithShellCharactersAndRunsNoneOfThem() throws Exception {
+        Path install = dir.resolve(HOSTILE).resolve("raytracer");
+        copyTree(installHome(), install);
+        Path work = Files.createDirectories(dir.resolve("work " + HOSTILE));
+        Files.writeString(work.resolve("s.txt"), "Width 4\nHeight 3\nCamera Camera\nVector3d eye [0 0 5]\n"
+                + "Material Diffuse d\nVector3d diffuseColor [1 0 0]\n"
+                + "Surface Sphere\ndouble radius 1\nref material d\n"
+                + "Light PointLight\nVector3d position [3 3 3]\n");
+
+        // a render through the script in the hostile folder, class-data sharing archive present
+        assertTrue(Files.exists(install.resolve("lib/raytracer.jsa")), "the archive is installed, so its option is used");
+        Run r = run(install.resolve("bin/raytracer"), work, Map.of(), "-q", "s.txt");
+        assertEquals(0, r.status, r.err);
+        assertTrue(Files.size(work.resolve("s.png")) > 0, "the image was written");
+        assertNothingRan();
+
+        // started through a symbolic link (resolved to the installation, as Gradle's script does)
+        Path link = Files.createSymbolicLink(work.resolve("rt link"), install.resolve("bin/raytracer"));
+        Run v = run(link, work, Map.of(), "--version");
+        assertEquals(0, v.status, v.err);
+        assertTrue(v.out.toLowerCase().contains("raytracer"), v.out);
+        assertNothingRan();
+        assertTrue(Files.isSymbolicLink(link) && Files.exists(link, LinkOption.NOFOLLOW_LINKS));
+    }
+
+    @Test
+    void javaOptsAreSplitWithQuotesAndNeverEvaluated() throws Exception {
+        Path script = installHome().resolve("bin/raytracer");
+        Run r = run(script, dir, Map.of(
+                "JAVA_OPTS", "\"-Dray.test.spaced=a b\" -XshowSettings:properties",
+                "RAYTRACER_OPTS", "-Dray.test.sub=$(touch${IFS}PWNED) -Dray.test.tick=`touch${IFS}PWNED2`"),
+                "--version");
+        assertEquals(0, r.status, r.err);
+        assertTrue(r.err.contains("ray.test.spaced = a b"), "quoted option kept whole: " + r.err);
+        assertTrue(r.err.contains("ray.test.sub = $(touch${IFS}PWNED)"), "passed literally: " + r.err);
+        assertTrue(r.err.contains("ray.test.tick = `touch${IFS}PWNED2`"), "passed literally: " + r.err);
+        assertNothingRan();
+    }
+}
