@@ -9,6 +9,7 @@ public final class GraderRender {
 
     public static Vector3d[][] render(String scene) throws Exception {
         Scene s = Parser.parse(new File(scene));
+        s.camera.recalculate();     // as the framework does once after reading a scene
         return s.renderAll();
     }
 }

@@ -215,12 +215,16 @@ public final class Grader {
         for (int k = 0; k < results.size(); k++) {
             TestResult r = results.get(k);
             TestSet.Item i = items.get(k);
-            if (i.kind() == TestSet.Kind.SCENE && !r.passed() && !i.uses().isEmpty()) {
+            if (i.kind() == TestSet.Kind.SCENE && !r.passed() && (!i.uses().isEmpty() || !failedMethods.isEmpty())) {
                 List<String> suspects = new ArrayList<>();
                 for (String m : i.uses()) {
                     if (failedMethods.containsKey(m)) {
                         suspects.add(m);
                     }
+                }
+                if (suspects.isEmpty()) {
+                    // every scene goes through the camera, trace and the render loop too: any failing method may be at fault
+                    suspects.addAll(failedMethods.keySet());
                 }
                 String hint = suspects.isEmpty() ? " This scene uses " + String.join(", ", i.uses()) + "."
                         : " Fix first: " + String.join(", ", suspects) + " (" + (suspects.size() == 1 ? "its" : "their")

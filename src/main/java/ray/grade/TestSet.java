@@ -93,6 +93,7 @@ public final class TestSet {
                 case "framework", "checks", "scenes", "references" -> {
                     need(w, 2, where, w[0] + " PATH");
                     Path p = dir.resolve(w[1]).normalize();
+                    p = Files.isDirectory(p) ? p.toRealPath() : p;
                     if (!Files.isDirectory(p)) {
                         throw new IOException(where + w[0] + " folder " + p + " does not exist");
                     }
