@@ -1,31 +1,26 @@
 package ray;
 
 import java.util.ArrayList;
-import java.util.EnumSet;
 import java.util.IdentityHashMap;
-import java.util.Map;
-import java.util.Set;
 import java.util.List;
+import java.util.Map;
 import javax.vecmath.Vector3d;
 import ray.accel.Accelerator;
-import ray.accel.Bvh;
 import ray.light.Light;
 import ray.light.LightSample;
 import ray.material.Material;
-import ray.plan.RenderPlan;
-import ray.plan.Skip;
-import ray.render.Image;
-import ray.render.Renderer;
 import ray.surface.Surface;
 
 /**
  * Everything a render needs: camera, surfaces, lights, materials and the global settings of the scene
  * file ({@code BGColor}, {@code AmbientLight}, {@code Width}, {@code Height}, {@code AASamples},
- * {@code MaxDepth}).
+ * {@code MaxDepth}, {@code Sampler}, {@code TargetError}). Data, and the ray-query layer over it: a
+ * render's own settings ({@code ray.settings.RenderSettings}) are resolved from these globals once and
+ * never written back.
  *
  * <p>The framework's methods are kept: {@link #renderAll()}, {@link #renderPixel(int, int)} and
- * {@link #trace(Ray)}. Before the first ray, {@link #prepare()} builds the BVH over the surfaces; call
- * it again after changing the scene.
+ * {@link #trace(Ray)}. Before the first ray the scene is prepared (camera frame, render plan, BVH) by the
+ * renderer or, for the framework's methods, by {@link #prepare()}; call it again after changing the scene.
  */
 public class Scene {
 
@@ -36,7 +31,7 @@ public class Scene {
     public int height;
     /** n_s: each pixel is the mean of n_s x n_s samples. */
     public int samplesPerPixel = 1;
-    /** The scene's {@code Sampler} global: one of {@code ray.render.Sampler.NAMES} (grid, the default). */
+    /** The scene's {@code Sampler} global: one of {@code ray.settings.RenderOption.SAMPLER}'s choices (grid, the default). */
     public String sampler = "grid";
     /** The scene's {@code TargetError} global: the adaptive sampler's target, in 8-bit steps. */
     public double targetError = 0.5;
@@ -47,19 +42,23 @@ public class Scene {
     public List<Material> materials = new ArrayList<>();
 
     private volatile Accelerator accel;
-    private volatile RenderPlan plan;
-    private Set<Skip> skips = EnumSet.allOf(Skip.class);
-    private boolean cutFaint;
-    /** A plan derived by {@link #derivePlan()} for the next {@link #prepare()} to use. */
-    private RenderPlan pendingPlan;
     /** The names objects were given in the scene file ({@code Material Diffuse red}), for messages and the plan. */
     private final Map<Object, String> names = new IdentityHashMap<>();
 
     /**
-     * Validates the objects, fixes the camera frame and builds the acceleration structure. Called by
-     * the renderer and, lazily, by the first {@link #trace}; idempotent.
+     * Readies the scene for rays with its own settings (camera frame, render plan, acceleration structure)
+     * through the {@link Engine}. Called lazily by the first ray of the framework's methods; a render
+     * prepares with its own settings instead.
      */
     public synchronized void prepare() {
+        Engine.get().prepare(this);
+    }
+
+    /**
+     * Fixes the camera frame: the aspect from the image size where the scene gave none, then
+     * {@link Camera#init()}. The first step of every preparation.
+     */
+    public void prepareCamera() {
         if (camera == null) {
             throw new IllegalStateException("the scene has no camera");
         }
@@ -67,51 +66,6 @@ public class Scene {
             camera.aspect = (double) width / height;
         }
         camera.init();
-        RenderPlan p = pendingPlan != null ? pendingPlan : RenderPlan.derive(this, skips, cutFaint);
-        pendingPlan = null;
-        p.apply();
-        plan = p;
-        accel = Bvh.build(surfaces, this);
-    }
-
-    /** The render plan of the last {@link #prepare()} (derived there, before the first ray). */
-    public RenderPlan plan() {
-        accelerator();
-        return plan;
-    }
-
-    /**
-     * Derives the render plan now, before {@link #prepare()} (the command line checks its cost before
-     * building anything); the next prepare uses this plan instead of deriving it again, so the plan is
-     * derived once per render. Change the scene after this and prepare derives afresh only if the
-     * change went through {@link #planSkips} or {@link #planCutFaint}.
-     */
-    public synchronized RenderPlan derivePlan() {
-        pendingPlan = RenderPlan.derive(this, skips, cutFaint);
-        return pendingPlan;
-    }
-
-    /**
-     * Which of the plan's exact skips the next {@link #prepare()} makes (all by default); tests and
-     * {@code --plan}'s "without the plan" line turn them off. Takes effect at the next prepare.
-     */
-    public void planSkips(Set<Skip> s) {
-        skips = s.isEmpty() ? EnumSet.noneOf(Skip.class) : EnumSet.copyOf(s);
-        pendingPlan = null;
-    }
-
-    /**
-     * Whether the next {@link #prepare()} cuts mirror paths whose remaining weight is below
-     * {@link RenderPlan#FAINT} (off by default: inexact, the {@code --cut-faint} option).
-     */
-    public void planCutFaint(boolean cut) {
-        cutFaint = cut;
-        pendingPlan = null;
-    }
-
-    /** True when the next {@link #prepare()} cuts faint mirror paths ({@link #planCutFaint}). */
-    public boolean cutsFaintPaths() {
-        return cutFaint;
     }
 
     /** Records the name {@code o} has in the scene file. */
@@ -135,23 +89,23 @@ public class Scene {
     }
 
     /**
-     * Replaces the acceleration structure until the next {@link #prepare()} (for tools: the benchmark
-     * wraps it to record the rays a render casts).
+     * Installs the acceleration structure rays are tested against until the next preparation (the
+     * preparation installs the BVH here; the benchmark wraps it to record the rays a render casts).
      */
     public void useAccelerator(Accelerator a) {
         accel = a;
     }
 
-    /** Renders the whole image: {@code [x][y]}, x across, y down from the top row. */
+    /** Renders the whole image with the scene's own settings: {@code [x][y]}, x across, y down from the top row. */
     public Vector3d[][] renderAll() {
-        return new Renderer(this).render().toVectors();
+        return Engine.get().renderAll(this);
     }
 
     /** The colour of pixel (x, y): the mean of its n_s x n_s samples. */
     public Vector3d renderPixel(int x, int y) {
         accelerator();   // prepares a scene not rendered yet: the camera frame is set up there
         Vector3d out = new Vector3d();
-        new Renderer(this).renderPixel(TraceContext.current(this), x, y, out);
+        Engine.get().renderPixel(this, TraceContext.current(this), x, y, out);
         return out;
     }
 
@@ -165,7 +119,7 @@ public class Scene {
         TraceContext ctx = TraceContext.current(this);
         Vector3d out = new Vector3d();
         int depth = Math.max(ray.depth, ctx.level);
-        if (depth > maxDepth) {
+        if (depth > ctx.maxDepth) {
             return out;   // a user material recursing past MaxDepth: not followed (not cast), black
         }
         Ray r = new Ray();
@@ -211,7 +165,7 @@ public class Scene {
         // inside framework-style material code, ctx.level is the depth of the rays it traces: one more
         // than the ray it is shading (which may be a fresh Ray of depth 0 it made itself)
         int depth = Math.max(ray.depth, ctx.level - 1);
-        if (depth >= maxDepth) {
+        if (depth >= ctx.maxDepth) {
             return null;
         }
         Ray next = ctx.ray(depth + 1);
@@ -263,10 +217,5 @@ public class Scene {
         record.spawnRayTo(p.x, p.y, p.z, s);
         ctx.stats.count(RayKind.SHADOW);
         return accelerator().anyHit(s, ctx);
-    }
-
-    /** Renders into an {@link Image} (linear colours) with this scene's settings. */
-    public Image render() {
-        return new Renderer(this).render();
     }
 }

@@ -20,7 +20,7 @@ public final class TraceContext {
     public final LightSample lightSample = new LightSample();
     public final RayStats stats = new RayStats();
     /** The pixel sample being traced: light and effect code draws its sampler dimensions here (no allocation). */
-    public final ray.render.PixelSample sample = new ray.render.PixelSample();
+    public final PixelSample sample = new PixelSample();
     /**
      * The scene accelerator's own per-thread scratch (for the BVH its {@code RayQuery}: traversal stack,
      * per-ray set-up); made and used by the accelerator only.
@@ -38,7 +38,17 @@ public final class TraceContext {
      */
     public double pathWeight = 1;
 
+    /**
+     * The render's MaxDepth: the ray-query layer casts no secondary ray deeper than this. Fixed by the
+     * render that made the context (its resolved settings); a context made by {@link #current} for code
+     * outside a render follows the scene's own global.
+     */
+    public int maxDepth;
+    /** Made by {@link #current}, outside any render: {@link #maxDepth} follows the scene asked about. */
+    private boolean followsScene;
+
     public TraceContext(int maxDepth) {
+        this.maxDepth = maxDepth;
         grow(maxDepth + 2);
     }
 
@@ -47,7 +57,10 @@ public final class TraceContext {
         TraceContext c = CURRENT.get();
         if (c == null) {
             c = new TraceContext(scene.maxDepth);
+            c.followsScene = true;
             CURRENT.set(c);
+        } else if (c.followsScene) {
+            c.maxDepth = scene.maxDepth;
         }
         return c;
     }

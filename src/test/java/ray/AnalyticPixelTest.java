@@ -319,7 +319,7 @@ class AnalyticPixelTest {
             }
         }
         // and in the PNG: 0.52, 0.61, 0.43 -> 133.1, 156.05, 110.15 floored
-        BufferedImage png = s.render().toBufferedImage();
+        BufferedImage png = new ray.render.Renderer(s).render().toBufferedImage();
         assertEquals(133 << 16 | 156 << 8 | 110, png.getRGB(5, 2) & 0xFFFFFF);
     }
 

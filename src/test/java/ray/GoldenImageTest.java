@@ -57,7 +57,7 @@ class GoldenImageTest {
         assertTrue(Files.isRegularFile(reference), "scenes/" + name + ".txt has no reference image " + reference
                 + " (make one with gradle regenerateReferences and look at it before committing)");
         BufferedImage expected = ImageIO.read(reference.toFile());
-        Image rendered = Parser.parse(SCENES.resolve(name + ".txt")).render();
+        Image rendered = new ray.render.Renderer(Parser.parse(SCENES.resolve(name + ".txt"))).render();
         BufferedImage actual = rendered.toBufferedImage();
 
         if (expected.getWidth() != actual.getWidth() || expected.getHeight() != actual.getHeight()) {

@@ -17,6 +17,7 @@ import ray.parse.SceneFormatException;
 import ray.render.Image;
 import ray.render.PngWriter;
 import ray.render.Renderer;
+import ray.settings.RenderSettings;
 
 /**
  * The command line: {@code raytracer scene.txt [more.txt ...]} renders each scene to a PNG of the same
@@ -242,10 +243,7 @@ public final class Main implements Callable<Integer> {
             return 2;
         }
         if (plan) {
-            return ray.plan.PlanCommand.run(scenes, json, scene -> {
-                sampling.applyTo(scene);
-                scene.planCutFaint(cutFaint);
-            }, out, err);
+            return PlanCommand.run(scenes, json, renderSettings(), out, err);
         }
         if (study) {
             if (scenes.isEmpty() || output != null) {
@@ -292,8 +290,13 @@ public final class Main implements Callable<Integer> {
                     : "DISPLAY=" + display + " does not answer") + ");")));
             return 2;
         }
-        ray.viewer.ViewingFrame.open(scenes.isEmpty() ? null : scenes.get(0));
+        ray.viewer.ViewingFrame.open(scenes.isEmpty() ? null : scenes.get(0), renderSettings());
         return VIEWER_OPEN;
+    }
+
+    /** The render options given (sampling, MaxDepth, --cut-faint), as settings each scene resolves against its globals. */
+    RenderSettings renderSettings() {
+        return sampling.settings().cutFaint(cutFaint);
     }
 
     PrintStream out() {

@@ -33,7 +33,7 @@ public final class RegenerateReferences {
         for (Path f : files) {
             Scene scene = Parser.parse(f);
             String name = f.getFileName().toString().replaceAll("\\.txt$", ".png");
-            PngWriter.write(scene.render(), refs.resolve(name));
+            PngWriter.write(new ray.render.Renderer(scene).render(), refs.resolve(name));
             System.out.println("wrote " + refs.resolve(name));
         }
         System.out.println("Review the changes (git diff --stat " + refs + ") before committing them.");

@@ -2,15 +2,16 @@ package ray.app;
 
 import java.io.PrintStream;
 import picocli.CommandLine.Option;
-import ray.Scene;
-import ray.parse.Limits;
 import ray.render.RenderSummary;
-import ray.render.Sampler;
+import ray.settings.RenderOption;
+import ray.settings.RenderSettings;
 
 /**
- * The command line's sampling options ({@code --sampler}, {@code --samples}, {@code --target-error}),
- * mixed into {@link Main}: they override the scene's {@code Sampler}, {@code AASamples} and
- * {@code TargetError} globals.
+ * The command line's render options ({@code --sampler}, {@code --samples}, {@code --target-error},
+ * {@code --max-depth}), mixed into {@link Main}: they override the scene's
+ * {@code Sampler}, {@code AASamples}, {@code TargetError} and {@code MaxDepth} globals, as one
+ * {@link RenderSettings} value that every mode (render, {@code --plan}, {@code --view}) resolves
+ * against each scene. Their ranges are {@link RenderOption}'s.
  */
 final class SamplingOptions {
 
@@ -25,31 +26,42 @@ final class SamplingOptions {
             + "is below E 8-bit steps (default: the scene's TargetError, else 0.5)")
     Double targetError;
 
+    @Option(names = "--max-depth", paramLabel = "D", description = "mirror and refraction bounces followed; overrides MaxDepth")
+    Integer maxDepth;
+
     /** What is wrong with the options, or null. */
     String problem() {
-        if (sampler != null && !Sampler.NAMES.contains(sampler)) {
-            return "--sampler must be one of " + String.join(", ", Sampler.NAMES) + ", got '" + sampler + "'";
+        if (sampler != null && RenderOption.SAMPLER.problem("--sampler", sampler) != null) {
+            return RenderOption.SAMPLER.problem("--sampler", sampler);
         }
-        if (samples != null && (samples < 1 || samples > Limits.MAX_AA_SAMPLES)) {
-            return "--samples must be 1 to " + Limits.MAX_AA_SAMPLES + ", got " + samples;
+        if (samples != null && RenderOption.SAMPLES.problem("--samples", samples) != null) {
+            return RenderOption.SAMPLES.problem("--samples", samples);
         }
-        if (targetError != null && !(targetError >= 0 && targetError <= 255)) {
-            return "--target-error must be 0 to 255 (8-bit steps), got " + targetError;
+        if (targetError != null && RenderOption.TARGET_ERROR.problem("--target-error", targetError) != null) {
+            return RenderOption.TARGET_ERROR.problem("--target-error", targetError);
+        }
+        if (maxDepth != null && RenderOption.MAX_DEPTH.problem("--max-depth", maxDepth) != null) {
+            return RenderOption.MAX_DEPTH.problem("--max-depth", maxDepth);
         }
         return null;
     }
 
-    /** Writes the options given into the scene's globals. */
-    void applyTo(Scene scene) {
+    /** The options given, as settings that override a scene's globals (check {@link #problem()} first). */
+    RenderSettings settings() {
+        RenderSettings s = new RenderSettings();
         if (sampler != null) {
-            scene.sampler = sampler;
+            s = s.sampler(sampler);
         }
         if (samples != null) {
-            scene.samplesPerPixel = samples;
+            s = s.samples(samples);
         }
         if (targetError != null) {
-            scene.targetError = targetError;
+            s = s.targetError(targetError);
         }
+        if (maxDepth != null) {
+            s = s.maxDepth(maxDepth);
+        }
+        return s;
     }
 
     /** For any sampler but the grid (whose output stays as it always was): samples per pixel and estimated error. */

@@ -15,6 +15,9 @@ import ray.render.Image;
 import ray.render.PngEncoder;
 import ray.render.PngWriter;
 import ray.render.Renderer;
+import ray.plan.CostGate;
+import ray.plan.RenderPlan;
+import ray.settings.RenderSettings;
 
 /**
  * One scene of the command line: checks the scene file and the image's destination, reads the scene,
@@ -143,17 +146,24 @@ final class SceneJob {
         for (String w : warnings) {
             err.println(w);
         }
+        RenderSettings settings = main.renderSettings().resolve(scene);
+        RenderPlan plan;
         try {
-            main.sampling.applyTo(scene);
-            scene.planCutFaint(main.cutFaint);
-            if (!ray.plan.CostGate.check(name, scene, main.allowLong, main.threads, main.quiet, err)) {
-                return false;
-            }
+            plan = RenderPlan.derive(scene, settings);   // the render's own plan: the renderer follows it
+        } catch (RuntimeException e) {
+            plan = null;   // a user's class failing in terms(): the render reports it, as it would any failure of that class
         } catch (Throwable e) {       // the plan asks the scene's own classes about themselves
             return fail(name + ": planning the render failed: " + Failures.describe(e));
         }
+        try {
+            if (plan != null && !CostGate.check(name, plan, main.allowLong, main.threads, main.quiet, err)) {
+                return false;
+            }
+        } catch (Throwable e) {
+            return fail(name + ": planning the render failed: " + Failures.describe(e));
+        }
         long t1 = System.nanoTime();
-        Renderer renderer = new Renderer(scene).threads(main.threads);
+        Renderer renderer = new Renderer(scene).threads(main.threads).settings(settings).plan(plan);
         ProgressLine progress = !main.quiet && err == System.err && Terminal.stderr()
                 ? new ProgressLine(err, name, (long) scene.width * scene.height).start() : null;
         if (progress != null) {
@@ -195,13 +205,13 @@ final class SceneJob {
         long t3 = System.nanoTime();
         // plain concatenation, not printf: java.util.Formatter's first use loads locale data (~20 ms)
         if (!main.quiet && !main.json) {   // with --json, stdout holds JSON Lines only
-            summary.println(name + " -> " + target + " (" + scene.width + "x" + scene.height + ", " + scene.samplesPerPixel
-                    + "x" + scene.samplesPerPixel + " AA, " + Main.fixed(t3 - t0, 2) + " s, "
+            summary.println(name + " -> " + target + " (" + scene.width + "x" + scene.height + ", " + settings.samples()
+                    + "x" + settings.samples() + " AA, " + Main.fixed(t3 - t0, 2) + " s, "
                     + raysPerSecond(renderer.stats().total(), t2 - t1) + " rays/s: " + renderer.stats() + ")");
             SamplingOptions.report(summary, renderer.summary());
         }
         if (main.stats && main.json) {
-            summary.println(StatsJson.line(scenePath, target.stdout() ? Path.of("-") : target.path(), scene, renderer.stats(),
+            summary.println(StatsJson.line(scenePath, target.stdout() ? Path.of("-") : target.path(), scene, settings, renderer.stats(),
                     new long[] {t0, t1, t2, t3}));
         } else if (main.stats) {
             long build = scene.accelerator() instanceof Bvh b ? b.buildNanos() : 0;

@@ -6,6 +6,7 @@ import ray.RayStats;
 import ray.Scene;
 import ray.accel.Bvh;
 import ray.plan.JsonLine;
+import ray.settings.RenderSettings;
 
 /** {@code --stats --json}: one render's numbers as one JSON object (keys in docs/json.md). */
 final class StatsJson {
@@ -13,15 +14,15 @@ final class StatsJson {
     private StatsJson() {
     }
 
-    /** {@code t} holds System.nanoTime() at start, after parsing, after rendering and after writing. */
-    static String line(Path scenePath, Path png, Scene scene, RayStats stats, long[] t) {
+    /** {@code settings}: the render's, resolved. {@code t} holds System.nanoTime() at start, after parsing, after rendering and after writing. */
+    static String line(Path scenePath, Path png, Scene scene, RenderSettings settings, RayStats stats, long[] t) {
         long build = scene.accelerator() instanceof Bvh b ? b.buildNanos() : 0;
         double bytes = scene.accelerator() instanceof Bvh b && b.primitiveCount() > 0
                 ? Math.round(10.0 * b.memoryBytes() / b.primitiveCount()) / 10.0 : 0;
         JsonLine j = new JsonLine().put("scene", scenePath.toString()).put("output", png.toString())
                 .put("width", scene.width).put("height", scene.height)
-                .put("samplesPerPixel", Math.max(1, scene.samplesPerPixel) * Math.max(1, scene.samplesPerPixel))
-                .put("maxDepth", scene.maxDepth);
+                .put("samplesPerPixel", settings.samples() * settings.samples())
+                .put("maxDepth", settings.maxDepth());
         j.open("seconds").put("parse", seconds(t[1] - t[0])).put("build", seconds(build)).put("render", seconds(t[2] - t[1] - build))
                 .put("write", seconds(t[3] - t[2])).put("total", seconds(t[3] - t[0])).close();
         j.put("cpuSeconds", seconds(Main.processCpuNanos())).put("peakRssBytes", Main.peakRssBytes()).put("bvhBytesPerPrimitive", bytes);

@@ -4,7 +4,7 @@ import javax.vecmath.Vector3d;
 import ray.IntersectionRecord;
 import ray.Scene;
 import ray.TraceContext;
-import ray.render.PixelSample;
+import ray.PixelSample;
 
 /**
  * A rectangular light: the parallelogram {@code position +- edge1/2 +- edge2/2}, cut into n x n cells.

@@ -4,16 +4,13 @@ package ray.parse;
  * The largest settings the parser accepts, so that an absurd scene is refused with a message before
  * anything is allocated (see {@code docs/bad-input.md}). The image-size limit follows the JVM's heap:
  * raise it with {@code -Xmx}, for the launcher {@code JAVA_OPTS=-Xmx16g raytracer big.txt} (or
- * {@code RAYTRACER_OPTS}). The other limits are constants here; change them and rebuild.
+ * {@code RAYTRACER_OPTS}). The other limits are constants here; change them and rebuild. The render
+ * settings' ranges (AASamples up to 64, MaxDepth up to 1000, ...) are {@code ray.settings.RenderOption}'s.
  */
 public final class Limits {
 
     /** Largest Width or Height. */
     public static final int MAX_SIDE = 1 << 16;
-    /** Largest n_s (n_s x n_s = 4,096 samples per pixel). */
-    public static final int MAX_AA_SAMPLES = 64;
-    /** Largest MaxDepth. */
-    public static final int MAX_DEPTH = 1000;
     /** Bytes the renderer needs per pixel: linear RGB doubles, the 8-bit image and the PNG encoder's copy. */
     public static final long BYTES_PER_PIXEL = 24 + 4 + 4;
     /**

@@ -21,6 +21,7 @@ import ray.SceneObject;
 import ray.light.Light;
 import ray.material.Material;
 import ray.surface.Surface;
+import ray.settings.RenderOption;
 
 /**
  * Reads the scene format ({@code scene-format.md}): object headers {@code <ObjectType> <ClassName> [name]},
@@ -541,10 +542,10 @@ public final class Parser {
         if (first != null) {
             throw error(key + " is set twice (first at line " + first + "; expected each setting once)");
         }
+        RenderOption option = RenderOption.ofGlobal(key);
         if (value.isEmpty()) {
-            throw error("'" + key + "' needs a value (expected '" + key + " " + (vector ? "[r g b]" : key.equals("AASamples") ? "<n>"
-                    : key.equals("MaxDepth") ? "<bounces>" : key.equals("Sampler") ? "<name>"
-                    : key.equals("TargetError") ? "<8-bit steps>" : "<pixels>") + "')");
+            throw error("'" + key + "' needs a value (expected '" + key + " " + (vector ? "[r g b]" : option != null ? option.hint
+                    : "<pixels>") + "')");
         }
         try {
             switch (key) {
@@ -552,10 +553,11 @@ public final class Parser {
                 case "AmbientLight" -> scene.ambientLight = Values.parseVector(value, key);
                 case "Width" -> scene.width = range(value, key, 1, Limits.MAX_SIDE);
                 case "Height" -> scene.height = range(value, key, 1, Limits.MAX_SIDE);
-                case "AASamples" -> scene.samplesPerPixel = range(value, key, 1, Limits.MAX_AA_SAMPLES);
+                case "AASamples" -> scene.samplesPerPixel = range(value, option);
                 case "Sampler" -> scene.sampler = samplerName(value);
                 case "TargetError" -> scene.targetError = targetError(value);
-                default -> scene.maxDepth = range(value, key, 0, Limits.MAX_DEPTH);
+                case "MaxDepth" -> scene.maxDepth = range(value, option);
+                default -> throw new IllegalStateException("no global " + key);
             }
         } catch (Problem p) {
             throw error(p.getMessage());
@@ -563,19 +565,25 @@ public final class Parser {
     }
 
     private static String samplerName(String value) throws Problem {
-        if (!ray.render.Sampler.NAMES.contains(value)) {
-            throw new Problem(Values.quote("Sampler " + value) + " names no sampler (" + Values.caseHint(value, ray.render.Sampler.NAMES)
-                    + "expected one of " + String.join(", ", ray.render.Sampler.NAMES) + ")");
+        List<String> names = RenderOption.SAMPLER.choices;
+        if (!RenderOption.SAMPLER.accepts(value)) {
+            throw new Problem(Values.quote("Sampler " + value) + " names no sampler (" + Values.caseHint(value, names)
+                    + "expected one of " + String.join(", ", names) + ")");
         }
         return value;
     }
 
     private static double targetError(String value) throws Problem {
         double e = Values.parseDouble(value, "TargetError");
-        if (!(e >= 0) || e > 255) {
-            throw new Problem(Values.quote("TargetError " + value) + " is out of range (expected 0 to 255 8-bit steps)");
+        if (!RenderOption.TARGET_ERROR.accepts(e)) {
+            throw new Problem(Values.quote("TargetError " + value) + " is out of range (expected " + RenderOption.TARGET_ERROR.expected() + ")");
         }
         return e;
+    }
+
+    /** A whole-number global checked against its row of the render-settings table. */
+    private static int range(String value, RenderOption option) throws Problem {
+        return range(value, option.global, (int) option.min, (int) option.max);
     }
 
     private static int range(String value, String key, int min, int max) throws Problem {

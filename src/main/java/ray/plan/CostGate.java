@@ -23,16 +23,11 @@ public final class CostGate {
     }
 
     /**
-     * Before rendering: prints the refusal and returns false when the scene's bound is absurd and not
-     * {@code allowed}; otherwise prints the long-render notice (unless {@code quiet}) and returns true.
+     * Before rendering with {@code plan} (the render's own: hand it to the renderer): prints the refusal
+     * and returns false when its bound is absurd and not {@code allowed}; otherwise prints the long-render
+     * notice (unless {@code quiet}) and returns true.
      */
-    public static boolean check(String sceneName, Scene scene, boolean allowed, int threads, boolean quiet, java.io.PrintStream err) {
-        RenderPlan plan;
-        try {
-            plan = scene.derivePlan();   // the render's own plan: prepare() uses it
-        } catch (RuntimeException e) {
-            return true;   // a user's class failing in terms(): the render reports it, as it would any failure of that class
-        }
+    public static boolean check(String sceneName, RenderPlan plan, boolean allowed, int threads, boolean quiet, java.io.PrintStream err) {
         String refused = refusal(sceneName, plan);
         if (refused != null && !allowed) {
             err.println(refused);
@@ -69,7 +64,7 @@ public final class CostGate {
     }
 
     /** "up to about 3 h on 2 threads" from a ray count. */
-    static String estimate(double rays, int threads) {
+    public static String estimate(double rays, int threads) {
         if (!Double.isFinite(rays)) {
             return "unknown: a user class may trace any number of rays";
         }

@@ -8,6 +8,7 @@ import ray.RayKind;
 import ray.Scene;
 import ray.light.Light;
 import ray.material.Material;
+import ray.settings.RenderSettings;
 
 /**
  * The render plan told to a person ({@link #text()}) or a program ({@link #json}): each effect the scene
@@ -40,11 +41,11 @@ public final class PlanReport {
         this.plan = plan;
         this.without = without;
         Scene s = plan.scene();
+        RenderSettings set = plan.settings();
         Map<Material, Shading> used = plan.used;
-        int ns = Math.max(1, s.samplesPerPixel);
-        boolean adaptive = "adaptive".equals(s.sampler);
-        effects.add(new Effect("camera rays", true, s.width + " x " + s.height + " pixels x " + (adaptive ? "at most " : "") + ns + "x" + ns
-                + " samples (" + s.sampler + " sampler)", RayKind.CAMERA));
+        int ns = set.samples(), maxDepth = set.maxDepth();
+        effects.add(new Effect("camera rays", true, s.width + " x " + s.height + " pixels x " + (set.adaptive() ? "at most " : "") + ns + "x" + ns
+                + " samples (" + set.sampler() + " sampler)", RayKind.CAMERA));
         effects.add(new Effect("geometry", !s.surfaces.isEmpty(), Geometry.describe(s.surfaces), null));
         List<Material> ambient = zero(s.ambientLight) ? List.of() : select(used, true, "ambient"), direct = select(used, true, "direct"),
                 highlight = select(used, true, "highlight"), mirror = select(used, true, "mirror"),
@@ -57,11 +58,11 @@ public final class PlanReport {
                 ? "every light is dark" : "no material has a direct term", RayKind.SHADOW));
         effects.add(new Effect("highlights", lit && !highlight.isEmpty(), !highlight.isEmpty() ? "k_s at " + names(highlight)
                 : "no material has k_s", null));
-        boolean reflects = !mirror.isEmpty() && s.maxDepth > 0;
-        effects.add(new Effect("mirror reflection", reflects, reflects ? "at " + names(mirror) + ", MaxDepth " + s.maxDepth
+        boolean reflects = !mirror.isEmpty() && maxDepth > 0;
+        effects.add(new Effect("mirror reflection", reflects, reflects ? "at " + names(mirror) + ", MaxDepth " + maxDepth
                 : mirror.isEmpty() ? "no material reflects" : "MaxDepth 0", RayKind.MIRROR));
-        boolean refracts = !refraction.isEmpty() && s.maxDepth > 0;
-        effects.add(new Effect("refraction", refracts, refracts ? "at " + names(refraction) + ", MaxDepth " + s.maxDepth
+        boolean refracts = !refraction.isEmpty() && maxDepth > 0;
+        effects.add(new Effect("refraction", refracts, refracts ? "at " + names(refraction) + ", MaxDepth " + maxDepth
                 : refraction.isEmpty() ? "no material refracts" : "MaxDepth 0", RayKind.REFRACTION));
         List<String> sampled = new ArrayList<>();
         for (Light l : plan.lights()) {
@@ -181,6 +182,16 @@ public final class PlanReport {
         return v.x == 0 && v.y == 0 && v.z == 0;
     }
 
+    /** The plan of {@code scene} rendered with {@code settings}, every exact skip made, beside the same plan without them. */
+    public static PlanReport of(String name, Scene scene, RenderSettings settings) {
+        return new PlanReport(name, RenderPlan.derive(scene, settings), RenderPlan.derive(scene, settings, RenderPlan.NO_SKIPS));
+    }
+
+    /** {@link #of(String, Scene, RenderSettings)} with the scene's own settings. */
+    public static PlanReport of(String name, Scene scene) {
+        return of(name, scene, new RenderSettings());
+    }
+
     /** The plan with the exact skips. */
     public RenderPlan plan() {
         return plan;
@@ -198,7 +209,7 @@ public final class PlanReport {
     public List<String> text() {
         List<String> out = new ArrayList<>();
         Scene s = plan.scene();
-        out.add("plan for " + sceneName + " (" + s.width + "x" + s.height + ", MaxDepth " + s.maxDepth + ")");
+        out.add("plan for " + sceneName + " (" + s.width + "x" + s.height + ", MaxDepth " + plan.settings().maxDepth() + ")");
         for (Effect e : effects) {
             String cost = e.kind == null ? "" : "   <= " + count(plan.bound().get(e.kind)) + " " + e.kind.key() + " rays";
             out.add(String.format(java.util.Locale.ROOT, "  %-19s %-4s %s%s", e.name, e.on ? "on" : "off", e.why, e.on ? cost : ""));
@@ -234,7 +245,7 @@ public final class PlanReport {
     public String json() {
         Scene s = plan.scene();
         JsonLine j = new JsonLine().put("scene", sceneName).put("width", s.width).put("height", s.height)
-                .put("samplesPerPixel", Math.max(1, s.samplesPerPixel) * Math.max(1, s.samplesPerPixel)).put("maxDepth", s.maxDepth);
+                .put("samplesPerPixel", plan.settings().samples() * plan.settings().samples()).put("maxDepth", plan.settings().maxDepth());
         j.open("effects");
         for (Effect e : effects) {
             j.open(key(e.name)).put("on", e.on).put("why", e.why).close();

@@ -21,7 +21,7 @@ public final class RayBound {
     private final double[] rays = new double[RayKind.values().length];
     /** What the bound was computed from: camera rays, most secondary rays per hit, shadow rays per lit point, MaxDepth. */
     double cameraRays, perPoint;
-    int branch, depth;
+    int branch, depth, ns;
     /** With faint paths cut: MaxDepth, of which only {@link #depth} bounces can be reached (-1: nothing cut). */
     int uncutDepth = -1;
 
@@ -31,7 +31,7 @@ public final class RayBound {
     static RayBound of(RenderPlan plan) {
         Scene scene = plan.scene();
         RayBound b = new RayBound();
-        int ns = Math.max(1, scene.samplesPerPixel);
+        int ns = plan.settings().samples();
         double n = (double) Math.max(0, scene.width) * Math.max(0, scene.height) * ns * ns;
         b.rays[CAMERA] = n;
         int mirror = 0, refraction = 0, branch = 0;
@@ -47,12 +47,13 @@ public final class RayBound {
         for (ray.light.Light l : plan.lights()) {
             perPoint += plan.unknownLights.contains(l) ? Double.POSITIVE_INFINITY : l.shadowRaysPerPoint();
         }
-        int depth = Math.max(0, scene.maxDepth);
+        int depth = Math.max(0, plan.settings().maxDepth());
         if (plan.cutsFaintPaths()) {
             b.uncutDepth = depth;
             depth = cutDepth(plan, depth);
         }
         b.cameraRays = n;
+        b.ns = ns;
         b.perPoint = perPoint;
         b.branch = branch;
         b.depth = depth;
@@ -104,7 +105,6 @@ public final class RayBound {
 
     /** What makes the bound large, in words: the factors it multiplies. */
     public String factors(Scene scene) {
-        int ns = Math.max(1, scene.samplesPerPixel);
         String s = scene.width + "x" + scene.height + " pixels x " + ns + "x" + ns + " samples";
         if (branch > 0 && depth > 0) {
             s += ", " + (branch == 1 ? "a chain of " + depth + " bounces (MaxDepth)"

@@ -12,11 +12,12 @@ import ray.Scene;
 import ray.light.Light;
 import ray.material.GlazedMaterial;
 import ray.material.Material;
+import ray.settings.RenderSettings;
 import ray.surface.Surface;
 
 /**
  * The render plan: which effects a scene uses, derived once per render from its materials, lights,
- * surfaces and globals before the first ray ({@link Scene#prepare()}), with an upper bound on the rays
+ * surfaces and resolved {@link RenderSettings} before the first ray, with an upper bound on the rays
  * of each kind. Built-in materials read it once ({@link Material#planned}) and cast only what it lists:
  * no light evaluation where a material has no direct term, no dark light, no mirror ray where k_m = 0,
  * one mirror ray for a chain of Glazed materials. {@link PlanReport} prints it.
@@ -34,6 +35,8 @@ public final class RenderPlan {
     public static final double FAINT = 0.5 / 255;
 
     private final Scene scene;
+    /** The render's settings, resolved against the scene: what the bound counts and the report prints. */
+    private final RenderSettings settings;
     private final Set<Skip> skips;
     private final boolean cutFaint;
     private final Light[] lights;
@@ -45,9 +48,10 @@ public final class RenderPlan {
     final List<Light> dark = new ArrayList<>(), unknownLights = new ArrayList<>();
     final RayBound bound;
 
-    private RenderPlan(Scene scene, Set<Skip> skips, boolean cutFaint) {
+    private RenderPlan(Scene scene, RenderSettings settings, Set<Skip> skips) {
         this.scene = scene;
-        this.cutFaint = cutFaint;
+        this.settings = settings.resolve(scene);
+        this.cutFaint = settings.cutsFaintPaths();
         this.skips = skips.isEmpty() ? NO_SKIPS : Collections.unmodifiableSet(EnumSet.copyOf(skips));
         List<Light> evaluated = new ArrayList<>();
         for (Light l : scene.lights) {
@@ -118,14 +122,27 @@ public final class RenderPlan {
         return last;
     }
 
-    /** Derives the plan of {@code scene} (its camera already set up) with the given exact skips. */
+    /** Derives the plan of {@code scene} rendered with its own settings, with the given exact skips. */
     public static RenderPlan derive(Scene scene, Set<Skip> skips) {
-        return new RenderPlan(scene, skips, false);
+        return new RenderPlan(scene, new RenderSettings(), skips);
     }
 
-    /** {@link #derive(Scene, Set)}, cutting faint mirror paths when {@code cutFaint} (inexact: {@link #FAINT}). */
-    public static RenderPlan derive(Scene scene, Set<Skip> skips, boolean cutFaint) {
-        return new RenderPlan(scene, skips, cutFaint);
+    /**
+     * The plan of {@code scene} rendered with {@code settings} (resolved against it here; cutting faint
+     * mirror paths when they say so, inexact: {@link #FAINT}), with the given exact skips.
+     */
+    public static RenderPlan derive(Scene scene, RenderSettings settings, Set<Skip> skips) {
+        return new RenderPlan(scene, settings, skips);
+    }
+
+    /** {@link #derive(Scene, RenderSettings, Set)} with every exact skip: the plan a render uses. */
+    public static RenderPlan derive(Scene scene, RenderSettings settings) {
+        return new RenderPlan(scene, settings, EnumSet.allOf(Skip.class));
+    }
+
+    /** The settings the plan was derived for, resolved against its scene. */
+    public RenderSettings settings() {
+        return settings;
     }
 
     /** True when mirror paths fainter than {@link #FAINT} are cut (the one inexact skip, opt-in). */
@@ -133,7 +150,7 @@ public final class RenderPlan {
         return cutFaint;
     }
 
-    /** Hands the plan to every material ({@link Material#planned}); {@link Scene#prepare()} calls it. */
+    /** Hands the plan to every material ({@link Material#planned}); the scene's preparation calls it. */
     public void apply() {
         for (Material m : materials) {
             m.planned(this);

@@ -14,7 +14,7 @@ public interface ProgressListener {
     }
 
     /**
-     * A progressive render ({@link RenderSettings#progressive}) finished pass {@code pass} (from 0) of
+     * A progressive render ({@link ray.settings.RenderSettings#progressive}) finished pass {@code pass} (from 0) of
      * {@code passes}: every pixel of {@code image} now holds that pass's estimate (pass 0 is a cheap
      * first look, one sample per pixel; the last pass is the final image). Within a pass, {@link #tileDone}
      * reports its tiles as usual, done and total counting that pass's tiles.

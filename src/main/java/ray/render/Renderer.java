@@ -8,6 +8,8 @@ import ray.Ray;
 import ray.RayStats;
 import ray.Scene;
 import ray.TraceContext;
+import ray.plan.RenderPlan;
+import ray.settings.RenderSettings;
 
 /**
  * Renders a scene on all cores. The image is cut into {@value #TILE} x {@value #TILE} tiles handed out
@@ -23,16 +25,19 @@ public final class Renderer {
 
     private final Scene scene;
     private int threads = Runtime.getRuntime().availableProcessors();
-    private SamplePattern pattern = SamplePattern.GRID;
     private ProgressListener listener = ProgressListener.NONE;
     private volatile boolean cancelled;
     private RayStats stats = new RayStats();
     /** The contexts of the render threads running now (empty between passes and once the render is over). */
     private volatile List<TraceContext> running = List.of();
     private RenderSettings settings = new RenderSettings();
+    /** A plan derived before the render (the command line's cost check), used when it fits the render. */
+    private RenderPlan givenPlan;
+    /** The plan of the last render, and the settings it resolved. */
+    private RenderPlan plan;
     private RenderSummary summary;
-    /** n_s of the render in progress. */
-    private int ns = 1;
+    /** n_s and MaxDepth of the render in progress (its resolved settings). */
+    private int ns = 1, maxDepth;
 
     public Renderer(Scene scene) {
         this.scene = scene;
@@ -43,11 +48,6 @@ public final class Renderer {
             throw new IllegalArgumentException("threads must be at least 1, got " + n);
         }
         this.threads = n;
-        return this;
-    }
-
-    public Renderer pattern(SamplePattern p) {
-        this.pattern = p;
         return this;
     }
 
@@ -85,65 +85,78 @@ public final class Renderer {
         return this;
     }
 
+    /**
+     * A plan derived beforehand for this scene ({@code RenderPlan.derive}, e.g. for a cost check, or with
+     * some exact skips off): the render uses it when it was derived for the settings the render resolves,
+     * and derives its own otherwise.
+     */
+    public Renderer plan(RenderPlan p) {
+        this.givenPlan = p;
+        return this;
+    }
+
+    /** The plan the last {@link #render()} followed (null before the first). */
+    public RenderPlan plan() {
+        return plan;
+    }
+
+    /** The settings the last {@link #render()} resolved from the scene and {@link #settings(RenderSettings)}. */
+    public RenderSettings resolvedSettings() {
+        return plan == null ? null : plan.settings();
+    }
+
     /** What the last {@link #render()} cost and its estimated error; null before the first render. */
     public RenderSummary summary() {
         return summary;
     }
 
     /**
-     * Renders the whole image (linear colours). Throws {@link RenderCancelledException} if
-     * {@link #cancel()} was called. A {@link RenderSettings#maxDepth} override is set on the scene for
-     * the render and restored after.
+     * Renders the whole image (linear colours) with the settings resolved once, here, from the scene's
+     * globals and {@link #settings(RenderSettings)}. Throws {@link RenderCancelledException} if
+     * {@link #cancel()} was called.
      */
     public Image render() {
-        int savedDepth = scene.maxDepth;
-        scene.maxDepth = settings.maxDepth(scene);
-        try {
-            long t0 = System.nanoTime();
-            scene.prepare();
-            ns = settings.samples(scene);
-            Sampler sampler = Sampler.create(settings.samplerName(scene), ns, settings.seed());
-            stats = new RayStats();
-            Image image;
-            Film film = null;
-            ErrorProbe.Estimate estimate = ErrorProbe.Estimate.NONE;
-            if (sampler instanceof GridSampler && !settings.progressive()) {
-                image = renderGrid(sampler);
-            } else {
-                SampledRender s = new SampledRender(this, scene, sampler, settings.targetError(scene), settings.progressive());
-                image = s.run();
-                film = s.film();
-                estimate = s.estimate();
-            }
-            double spp = film == null ? ns * ns : (double) film.totalSamples() / ((double) scene.width * scene.height);
-            summary = new RenderSummary(sampler.name(), ns, (System.nanoTime() - t0) / 1e9, stats, spp,
-                    estimate.rmse(), estimate.low(), estimate.high(), estimate.samplesPerPixel(), film);
-            return image;
-        } finally {
-            scene.maxDepth = savedDepth;
+        long t0 = System.nanoTime();
+        RenderSettings s = settings.resolve(scene);
+        RenderPlan p = givenPlan != null && givenPlan.scene() == scene && givenPlan.settings().equals(s)
+                ? givenPlan : RenderPlan.derive(scene, s);
+        RenderEngine.prepare(scene, p);
+        plan = p;
+        ns = s.samples();
+        maxDepth = s.maxDepth();
+        Sampler sampler = Sampler.create(s.sampler(), ns, s.seed());
+        stats = new RayStats();
+        Image image;
+        Film film = null;
+        ErrorProbe.Estimate estimate = ErrorProbe.Estimate.NONE;
+        if (sampler instanceof GridSampler && !s.progressive()) {
+            image = renderGrid(sampler);
+        } else {
+            SampledRender r = new SampledRender(this, scene, sampler, s.targetError(), s.progressive());
+            image = r.run();
+            film = r.film();
+            estimate = r.estimate();
         }
+        double spp = film == null ? ns * ns : (double) film.totalSamples() / ((double) scene.width * scene.height);
+        summary = new RenderSummary(sampler.name(), ns, (System.nanoTime() - t0) / 1e9, stats, spp,
+                estimate.rmse(), estimate.low(), estimate.high(), estimate.samplesPerPixel(), film);
+        return image;
     }
 
-    /** The scene format's grid (or the {@link #pattern} set), every pixel in one go: no film, today's exact arithmetic. */
+    /** The scene format's grid, every pixel in one go: no film, today's exact arithmetic. */
     private Image renderGrid(Sampler grid) {
         int w = scene.width, h = scene.height;
         Image image = new Image(w, h);
         // the regular grid's image-plane coordinates, once per sample column and row instead of per sample
-        double[] planeA = null, planeB = null;
-        if (pattern == SamplePattern.GRID) {
-            double[] off = new double[2 * ns * ns];
-            SamplePattern.GRID.offsets(0, 0, ns, off);
-            planeA = new double[w * ns];
-            planeB = new double[h * ns];
-            for (int x = 0; x < w; x++) {
-                for (int i = 0; i < ns; i++) {
-                    planeA[x * ns + i] = scene.camera.planeX(x + off[2 * i], w);
-                }
+        double[] planeA = new double[w * ns], planeB = new double[h * ns];
+        for (int x = 0; x < w; x++) {
+            for (int i = 0; i < ns; i++) {
+                planeA[x * ns + i] = scene.camera.planeX(x + GridSampler.gridValue(ns, i, 0), w);
             }
-            for (int y = 0; y < h; y++) {
-                for (int j = 0; j < ns; j++) {
-                    planeB[y * ns + j] = scene.camera.planeY(y + off[2 * j * ns + 1], h);
-                }
+        }
+        for (int y = 0; y < h; y++) {
+            for (int j = 0; j < ns; j++) {
+                planeB[y * ns + j] = scene.camera.planeY(y + GridSampler.gridValue(ns, j * ns, 1), h);
             }
         }
         final double[] tableA = planeA, tableB = planeB;
@@ -151,17 +164,12 @@ public final class Renderer {
             @Override
             public TileWorker worker(TraceContext ctx) {
                 Vector3d c = new Vector3d();
-                double[] offsets = new double[2 * ns * ns];
                 return new TileWorker() {
                     @Override
                     public void tile(int x0, int y0, int x1, int y1) {
                         for (int y = y0; y < y1; y++) {
                             for (int x = x0; x < x1; x++) {
-                                if (tableA != null) {
-                                    renderGridPixel(ctx, x, y, c, tableA, tableB, grid);
-                                } else {
-                                    renderPixel(ctx, x, y, c, offsets);
-                                }
+                                renderGridPixel(ctx, x, y, c, tableA, tableB, grid);
                                 image.set(x, y, c.x, c.y, c.z);
                             }
                         }
@@ -212,7 +220,7 @@ public final class Renderer {
                     // for all, two threads' hot objects shared cache lines, and every ray's writes
                     // bounced those lines between the cores (classic: 0.74 CPU s on two threads against 0.60 on one).
                     try {
-                        TraceContext ctx = new TraceContext(scene.maxDepth);
+                        TraceContext ctx = new TraceContext(maxDepth);
                         synchronized (contexts) {
                             contexts.add(ctx);
                             running = List.copyOf(contexts);   // its rays are seen as they are cast
@@ -315,10 +323,19 @@ public final class Renderer {
         throw (T) t;
     }
 
-    /** The mean of pixel (x, y)'s n_s x n_s samples, written into {@code out}. */
+    /**
+     * The mean of pixel (x, y)'s n_s x n_s grid samples with the scene's own settings, written into
+     * {@code out} (the framework's {@code Scene.renderPixel}; the scene is prepared already).
+     */
     public void renderPixel(TraceContext ctx, int x, int y, Vector3d out) {
-        ns = Math.max(1, scene.samplesPerPixel);
-        renderPixel(ctx, x, y, out, new double[2 * ns * ns]);
+        ns = RenderSettings.of(scene).samples();
+        int w = scene.width, h = scene.height;
+        double[] planeA = new double[(x + 1) * ns], planeB = new double[(y + 1) * ns];
+        for (int i = 0; i < ns; i++) {
+            planeA[x * ns + i] = scene.camera.planeX(x + GridSampler.gridValue(ns, i, 0), w);
+            planeB[y * ns + i] = scene.camera.planeY(y + GridSampler.gridValue(ns, i * ns, 1), h);
+        }
+        renderGridPixel(ctx, x, y, out, planeA, planeB, new GridSampler(ns));
     }
 
     /** {@link #renderPixel} for the regular grid, with the image-plane coordinates from the tables. */
@@ -340,25 +357,6 @@ public final class Renderer {
                 } else {
                     ctx.stats.invalidSamples++;   // last line of defence: a NaN never reaches a pixel
                 }
-            }
-        }
-        out.set(r / count, g / count, b / count);
-    }
-
-    private void renderPixel(TraceContext ctx, int x, int y, Vector3d out, double[] offsets) {
-        int count = ns * ns;
-        pattern.offsets(x, y, ns, offsets);
-        double r = 0, g = 0, b = 0;
-        Vector3d c = ctx.color(0);
-        for (int s = 0; s < count; s++) {
-            scene.camera.setRayThrough(ctx.ray(0), x + offsets[2 * s], y + offsets[2 * s + 1], scene.width, scene.height);
-            scene.traceCamera(ctx.ray(0), ctx, c);
-            if (Double.isFinite(c.x) && Double.isFinite(c.y) && Double.isFinite(c.z)) {
-                r += c.x;
-                g += c.y;
-                b += c.z;
-            } else {
-                ctx.stats.invalidSamples++;   // last line of defence: a NaN never reaches a pixel
             }
         }
         out.set(r / count, g / count, b / count);

@@ -1,6 +1,8 @@
 package ray.render;
 
 import java.util.List;
+import ray.SampleSource;
+import ray.settings.RenderOption;
 
 /**
  * Where the samples of a pixel go, and every other random decision a sample makes: a pure function
@@ -15,10 +17,10 @@ import java.util.List;
  * (one random point in each grid cell), {@code sobol} (Owen-scrambled Sobol points) and {@code adaptive}
  * (the grid's points, taken only until the pixel's estimated error is small enough).
  */
-public abstract class Sampler {
+public abstract class Sampler extends SampleSource {
 
-    /** The built-in samplers' names, as {@code --sampler} and the scene's {@code Sampler} global take them. */
-    public static final List<String> NAMES = List.of("grid", "jittered", "sobol", "adaptive");
+    /** The built-in samplers' names, as {@code --sampler} and the scene's {@code Sampler} global take them ({@link RenderOption#SAMPLER}). */
+    public static final List<String> NAMES = RenderOption.SAMPLER.choices;
 
     /** n_s: the pixel holds n_s x n_s samples. */
     protected final int n;
@@ -47,8 +49,7 @@ public abstract class Sampler {
             case "jittered" -> new JitteredSampler(ns, seed);
             case "sobol" -> new SobolSampler(ns, seed);
             case "adaptive" -> new AdaptiveSampler(ns);
-            default -> throw new IllegalArgumentException("unknown sampler '" + name + "' (expected one of "
-                    + String.join(", ", NAMES) + ")");
+            default -> throw new IllegalArgumentException(RenderOption.SAMPLER.problem("sampler", name));
         };
     }
 
@@ -66,6 +67,7 @@ public abstract class Sampler {
      * Dimension {@code dim} of sample {@code index} (0 to {@link #samplesPerPixel()} - 1) of pixel (x, y):
      * a number in [0, 1) that depends on nothing else.
      */
+    @Override
     public abstract double get(int x, int y, int index, int dim);
 
     /** The name {@link #create} knows this sampler by. */

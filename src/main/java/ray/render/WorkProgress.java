@@ -2,6 +2,7 @@ package ray.render;
 
 import java.util.concurrent.atomic.AtomicLong;
 import ray.Scene;
+import ray.settings.RenderSettings;
 
 /**
  * How far a render is, by work done rather than by tiles: each finished tile counts its pixels times
@@ -49,11 +50,12 @@ public final class WorkProgress implements ProgressListener {
      * second pass counted at its most, so it may end early).
      */
     public static WorkProgress of(Scene scene, RenderSettings settings, ProgressListener next) {
-        int ns = settings.samples(scene), all = ns * ns;
+        RenderSettings s = settings.resolve(scene);
+        int ns = s.samples(), all = ns * ns;
         int[] passes;
-        if (!settings.progressive()) {
+        if (!s.progressive()) {
             passes = new int[] {all};
-        } else if ("adaptive".equals(settings.samplerName(scene))) {
+        } else if (s.adaptive()) {
             int first = Math.min(4, all);                          // a first look of 4, then per-pixel refinement
             passes = new int[] {first, Math.max(1, all - first)};
         } else {

@@ -3,7 +3,7 @@ package ray.study;
 import java.util.List;
 import ray.Scene;
 import ray.render.Image;
-import ray.render.RenderSettings;
+import ray.settings.RenderSettings;
 import ray.render.RenderSummary;
 import ray.render.Renderer;
 import ray.render.Sampler;
@@ -26,12 +26,12 @@ final class RendererAdapter implements StudyRenderer {
     public Result render(Scene scene, Setting s) {
         RenderSettings settings = new RenderSettings().sampler(s.sampler()).samples(s.ns()).maxDepth(s.maxDepth()).seed(s.seed());
         if (s.sampler().equals("adaptive")) {
-            settings.targetError(s.targetError());
+            settings = settings.targetError(s.targetError());
         }
         Renderer r = new Renderer(scene).settings(settings).threads(threads);
         Image image = r.render();
         RenderSummary sum = r.summary();
-        boolean adaptive = s.sampler().equals("adaptive");
+        boolean adaptive = r.resolvedSettings().adaptive();
         return new Result(image, sum.seconds, sum.stats, sum.meanSamplesPerPixel, adaptive
                 ? new Estimate(sum.estimatedRmse, sum.estimatedRmseLow, sum.estimatedRmseHigh, sum.probeSamplesPerPixel) : Estimate.NONE);
     }

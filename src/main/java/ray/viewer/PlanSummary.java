@@ -2,7 +2,6 @@ package ray.viewer;
 
 import java.util.ArrayList;
 import java.util.List;
-import ray.Scene;
 import ray.plan.PlanReport;
 import ray.plan.RenderPlan;
 
@@ -17,14 +16,16 @@ final class PlanSummary {
     }
 
     /**
-     * The summary of {@code scene}'s plan, derived by {@link Scene#prepare()} (call this once the render
-     * has started, so the plan is not derived twice), or null if it cannot be had (a user's class
-     * failing while declaring itself is reported by the render, not here).
+     * The summary of a render's {@code plan} (call this once the render has started, so the plan is not
+     * derived twice), or null if it cannot be had (a user's class failing while declaring itself is
+     * reported by the render, not here).
      */
-    static String of(Scene scene) {
+    static String of(RenderPlan plan) {
+        if (plan == null) {
+            return null;
+        }
         try {
-            RenderPlan plan = scene.plan();
-            PlanReport report = new PlanReport("", plan, RenderPlan.derive(scene, RenderPlan.NO_SKIPS));
+            PlanReport report = new PlanReport("", plan, RenderPlan.derive(plan.scene(), plan.settings(), RenderPlan.NO_SKIPS));
             List<String> on = new ArrayList<>();
             for (PlanReport.Effect e : report.effects()) {
                 if (e.on && e.kind != ray.RayKind.CAMERA && !e.name.equals("geometry")) {

@@ -8,6 +8,7 @@ import ray.Scene;
 import ray.render.Image;
 import ray.render.Renderer;
 import ray.render.WorkProgress;
+import ray.settings.RenderSettings;
 
 /**
  * One attempt at showing a scene: read the file, then render it. Created and read on the session's
@@ -25,6 +26,8 @@ public final class RenderJob {
     volatile boolean cancelled;
     volatile Renderer renderer;
     volatile Scene scene;
+    /** The render's settings, resolved against the scene (null until it is read). */
+    volatile RenderSettings settings;
     volatile WorkProgress progress;
     private State state = State.PARSING;
     long parseNanos;
@@ -61,6 +64,11 @@ public final class RenderJob {
     }
 
     /** The scene as read (null while parsing or when it could not be read). */
+    /** The settings the render resolved: the session's (e.g. the command line's) over the scene's globals; null before. */
+    public RenderSettings settings() {
+        return settings;
+    }
+
     public Scene scene() {
         return scene;
     }

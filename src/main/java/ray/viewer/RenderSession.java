@@ -11,7 +11,7 @@ import ray.parse.SceneFormatException;
 import ray.render.Image;
 import ray.render.ProgressListener;
 import ray.render.RenderCancelledException;
-import ray.render.RenderSettings;
+import ray.settings.RenderSettings;
 import ray.render.Renderer;
 import ray.render.WorkProgress;
 
@@ -53,6 +53,8 @@ public final class RenderSession {
     private final Executor executor;
     private final View view;
     private final int threads;
+    /** The settings every render starts from (the command line's, for {@code raytracer --view}); the scene's globals fill the rest. */
+    private final RenderSettings base;
     private RenderJob current;
     private RenderJob shown;
     private RenderJob lastDone;
@@ -62,9 +64,15 @@ public final class RenderSession {
     }
 
     public RenderSession(Executor executor, View view, int threads) {
+        this(executor, view, threads, new RenderSettings());
+    }
+
+    /** A session whose renders use {@code base} over each scene's globals (every render option the command line takes). */
+    public RenderSession(Executor executor, View view, int threads, RenderSettings base) {
         this.executor = executor;
         this.view = view;
         this.threads = threads;
+        this.base = base;
     }
 
     /** The job being read or rendered, or the last one if none is (null before the first). */
@@ -135,8 +143,9 @@ public final class RenderSession {
         }
         // a first look of one sample per pixel (then 4, 16, ...) where there are several; the final image is
         // the same bit for bit, and with one sample per pixel the grid's own fast path stays
-        RenderSettings settings = new RenderSettings();
-        settings.progressive(settings.samples(scene) > 1 || !"grid".equals(settings.samplerName(scene)));
+        RenderSettings resolved = base.resolve(scene);
+        RenderSettings settings = resolved.progressive(resolved.samples() > 1 || !"grid".equals(resolved.sampler()));
+        job.settings = settings;
         Renderer renderer = new Renderer(scene).threads(threads).settings(settings);
         AtomicBoolean started = new AtomicBoolean(), drainPosted = new AtomicBoolean();
         Queue<Object[]> finished = new ConcurrentLinkedQueue<>();
@@ -154,7 +163,7 @@ public final class RenderSession {
             @Override
             public void tileDone(Image image, int x0, int y0, int x1, int y1, int done, int total) {
                 if (!started.getAndSet(true)) {
-                    job.planSummary = PlanSummary.of(scene);     // derived by the render's prepare(), before the first tile
+                    job.planSummary = PlanSummary.of(renderer.plan());     // the render's own plan, derived before the first tile
                 }
                 finished.add(new Object[] {image, new int[] {x0, y0, x1, y1}});
                 if (!drainPosted.getAndSet(true)) {

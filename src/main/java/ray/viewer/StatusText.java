@@ -29,7 +29,7 @@ final class StatusText {
         long rays = job.raysSoFar(), rendering = p.elapsedNanos(nowNanos);
         String rate = rays > 0 && rendering > 0 ? String.format(Locale.ROOT, " · %.2f M rays/s", rays / (rendering / 1e9) / 1e6) : "";
         return pass + percent(p.fraction()) + " · " + seconds(elapsed) + " elapsed"
-                + (left < 0 ? "" : " · about " + seconds(left) + " left") + rate + " · " + size(job.scene()) + plan(job);
+                + (left < 0 ? "" : " · about " + seconds(left) + " left") + rate + " · " + size(job) + plan(job);
     }
 
     /** {@code done in 2.31 s (read 0.05 s, render 2.26 s) · 1,234,567 rays, 0.53 M rays/s · 640x480, 3x3 AA}. */
@@ -39,15 +39,18 @@ final class StatusText {
         double perSecond = job.renderNanos() > 0 ? rays / (job.renderNanos() / 1e9) : 0;
         return "done in " + seconds(total) + " (read " + seconds(job.parseNanos()) + ", render " + seconds(job.renderNanos())
                 + ") · " + String.format(Locale.ROOT, "%,d rays, %.2f M rays/s", rays, perSecond / 1e6)
-                + " · " + size(job.scene()) + plan(job);
+                + " · " + size(job) + plan(job);
     }
 
     private static String plan(RenderJob job) {
         return job.planSummary() == null ? "" : " · " + job.planSummary();
     }
 
-    static String size(Scene s) {
-        return s.width + "x" + s.height + ", " + s.samplesPerPixel + "x" + s.samplesPerPixel + " AA";
+    /** The image size and n_s the render uses (its resolved settings: the command line's override, else the scene's). */
+    static String size(RenderJob job) {
+        Scene s = job.scene();
+        int ns = job.settings() != null ? job.settings().samples() : Math.max(1, s.samplesPerPixel);
+        return s.width + "x" + s.height + ", " + ns + "x" + ns + " AA";
     }
 
     static String percent(double f) {

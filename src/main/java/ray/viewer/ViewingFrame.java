@@ -28,6 +28,7 @@ import javax.swing.JTextArea;
 import javax.swing.SwingUtilities;
 import javax.swing.Timer;
 import ray.render.Image;
+import ray.settings.RenderSettings;
 
 /**
  * The viewer's window: open a scene (menu, Ctrl+O, drag and drop, recent files) and watch it render,
@@ -59,8 +60,13 @@ public final class ViewingFrame extends JFrame {
     private File lastDir = new File(".").getAbsoluteFile();
 
     ViewingFrame() {
+        this(new RenderSettings());
+    }
+
+    /** A window whose renders use {@code settings} over each scene's globals (the command line's render options). */
+    ViewingFrame(RenderSettings settings) {
         super(TITLE);
-        session = new RenderSession(SwingUtilities::invokeLater, new SessionEvents());
+        session = new RenderSession(SwingUtilities::invokeLater, new SessionEvents(), Runtime.getRuntime().availableProcessors(), settings);
         menus = new ViewerMenus(this);
         setJMenuBar(menus.bar());
         menus.bindExtraKeys(getRootPane());
@@ -97,6 +103,11 @@ public final class ViewingFrame extends JFrame {
      * when there is no display to open it on: none configured, or one that cannot be reached.
      */
     public static void open(Path scene) throws HeadlessException {
+        open(scene, new RenderSettings());
+    }
+
+    /** {@link #open(Path)}, rendering with {@code settings} over each scene's globals ({@code raytracer --view --samples 4 ...}). */
+    public static void open(Path scene, RenderSettings settings) throws HeadlessException {
         if (GraphicsEnvironment.isHeadless()) {
             throw new HeadlessException("no display");
         }
@@ -104,7 +115,7 @@ public final class ViewingFrame extends JFrame {
             GraphicsEnvironment.getLocalGraphicsEnvironment().getScreenDevices();   // connects to the display
             SwingUtilities.invokeAndWait(() -> {
                 LookAndFeels.install();
-                ViewingFrame f = new ViewingFrame();
+                ViewingFrame f = new ViewingFrame(settings);
                 f.setVisible(true);
                 if (scene != null) {
                     f.load(scene);

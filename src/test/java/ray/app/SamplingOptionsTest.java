@@ -51,6 +51,8 @@ class SamplingOptionsTest {
                 "adaptive with a zero target writes the grid's PNG");
         assertEquals(0, run("--sampler", "sobol", "--samples", "2", scene.toString(), "-o", dir.resolve("sobol.png").toString()));
         assertTrue(out().contains("2x2 AA") && out().contains("sobol: 4.0 samples per pixel"), out());
+        assertEquals(0, run("--max-depth", "0", "--plan", scene.toString()));
+        assertTrue(out().contains("MaxDepth 0"), "--plan sees the override: " + out());
     }
 
     @Test
@@ -63,6 +65,8 @@ class SamplingOptionsTest {
         assertEquals("raytracer: --samples must be 1 to 64, got 0", err().strip());
         assertEquals(2, run("--target-error", "-1", scene.toString()));
         assertEquals("raytracer: --target-error must be 0 to 255 (8-bit steps), got -1.0", err().strip());
+        assertEquals(2, run("--max-depth", "1001", scene.toString()));
+        assertEquals("raytracer: --max-depth must be 0 to 1000, got 1001", err().strip());
         assertFalse(Files.exists(dir.resolve("s.png")), "nothing written");
     }
 }

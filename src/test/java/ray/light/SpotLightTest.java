@@ -142,7 +142,7 @@ class SpotLightTest {
     }
 
     static Image render(String text) throws SceneFormatException {
-        return Parser.parse(text, "spot.txt", new ArrayList<>()).render();
+        return new ray.render.Renderer(Parser.parse(text, "spot.txt", new ArrayList<>())).render();
     }
 
     @Test

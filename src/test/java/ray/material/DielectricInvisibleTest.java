@@ -94,7 +94,7 @@ class DielectricInvisibleTest {
     };
 
     static Image render(String text) throws Exception {
-        return Parser.parse(text, "invisible.txt", new ArrayList<>()).render();
+        return new ray.render.Renderer(Parser.parse(text, "invisible.txt", new ArrayList<>())).render();
     }
 
     @ParameterizedTest

@@ -8,6 +8,7 @@ import org.junit.jupiter.api.Test;
 import ray.RayKind;
 import ray.Scene;
 import ray.render.Image;
+import ray.settings.RenderSettings;
 
 /**
  * The one inexact skip, opt-in: cutting mirror paths whose weight (product of k_m) is below half an
@@ -28,8 +29,7 @@ class CutFaintTest {
 
     private static PlanFixture render(boolean cut) throws Exception {
         Scene s = PlanFixture.parse(SCENE);
-        s.planCutFaint(cut);
-        return PlanFixture.render(s, EnumSet.allOf(Skip.class));
+        return PlanFixture.render(s, new RenderSettings().cutFaint(cut), EnumSet.allOf(Skip.class));
     }
 
     @Test
@@ -38,9 +38,9 @@ class CutFaintTest {
         // 0.5^8 = 1/256 >= 1/510 > 0.5^9: eight bounces of the thirty are followed
         assertEquals(30 * N, exact.rays(RayKind.MIRROR));
         assertEquals(8 * N, cut.rays(RayKind.MIRROR));
-        assertEquals(8 * N, cut.scene.plan().bound().get(RayKind.MIRROR), "the plan's bound knows the cut");
-        assertEquals(8, cut.scene.plan().bound().reachableDepth());
-        assertTrue(PlanCommand.report("t", cut.scene).text().stream().anyMatch(l -> l.startsWith("  faint paths cut     on   inexact")));
+        assertEquals(8 * N, cut.plan.bound().get(RayKind.MIRROR), "the plan's bound knows the cut");
+        assertEquals(8, cut.plan.bound().reachableDepth());
+        assertTrue(PlanReport.of("t", cut.scene, new RenderSettings().cutFaint(true)).text().stream().anyMatch(l -> l.startsWith("  faint paths cut     on   inexact")));
         // measured: how many 8-bit values change, and by how much (pinned: 45 of 1,152 by one step; the
         // light seen after the 9th bounce is bright enough to tip a rounding, as the option warns)
         int changed = 0, worst = 0;
@@ -57,6 +57,6 @@ class CutFaintTest {
     void nothingIsCutUnlessAsked() throws Exception {
         Scene s = PlanFixture.parse(SCENE);
         assertEquals(30 * N, RenderPlan.derive(s, EnumSet.allOf(Skip.class)).bound().get(RayKind.MIRROR));
-        assertTrue(PlanCommand.report("t", s).effects().stream().noneMatch(e -> e.name.equals("faint paths cut")));
+        assertTrue(PlanReport.of("t", s).effects().stream().noneMatch(e -> e.name.equals("faint paths cut")));
     }
 }

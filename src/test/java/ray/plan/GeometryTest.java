@@ -13,7 +13,7 @@ import ray.parse.Parser;
 class GeometryTest {
 
     private static String geometry(Scene s) {
-        return PlanCommand.report("t", s).effects().stream().filter(e -> e.name.equals("geometry")).findFirst().orElseThrow().why;
+        return PlanReport.of("t", s).effects().stream().filter(e -> e.name.equals("geometry")).findFirst().orElseThrow().why;
     }
 
     @Test
@@ -62,6 +62,6 @@ class GeometryTest {
     void aSceneWithoutSurfacesSaysSoAndTheEffectIsOff() throws Exception {
         Scene s = Parser.parse("Width 4\nHeight 4\nCamera Camera\nVector3d eye [0 0 5]\n", "e.txt", new ArrayList<>());
         assertEquals("no surfaces: every ray sees the background", geometry(s));
-        assertTrue(PlanCommand.report("t", s).effects().stream().noneMatch(e -> e.name.equals("geometry") && e.on));
+        assertTrue(PlanReport.of("t", s).effects().stream().noneMatch(e -> e.name.equals("geometry") && e.on));
     }
 }

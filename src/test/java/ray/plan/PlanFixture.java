@@ -13,6 +13,7 @@ import ray.parse.Parser;
 import ray.parse.SceneFormatException;
 import ray.render.Image;
 import ray.render.Renderer;
+import ray.settings.RenderSettings;
 
 /** Renders scene text with a chosen set of the plan's skips, keeping the image and the rays counted. */
 final class PlanFixture {
@@ -20,11 +21,14 @@ final class PlanFixture {
     final Scene scene;
     final Image image;
     final RayStats stats;
+    /** The plan the render followed. */
+    final RenderPlan plan;
 
-    private PlanFixture(Scene scene, Image image, RayStats stats) {
+    private PlanFixture(Scene scene, Image image, RayStats stats, RenderPlan plan) {
         this.scene = scene;
         this.image = image;
         this.stats = stats;
+        this.plan = plan;
     }
 
     static Scene parse(String text) throws SceneFormatException {
@@ -36,11 +40,14 @@ final class PlanFixture {
     }
 
     static PlanFixture render(Scene scene, Set<Skip> skips) {
-        scene.planSkips(skips);
-        Renderer r = new Renderer(scene).threads(2);
+        return render(scene, new RenderSettings(), skips);
+    }
+
+    static PlanFixture render(Scene scene, RenderSettings settings, Set<Skip> skips) {
+        Renderer r = new Renderer(scene).threads(2).settings(settings).plan(RenderPlan.derive(scene, settings, skips));
         Image image = r.render();
         assertEquals(0, r.stats().invalidSamples);
-        return new PlanFixture(scene, image, r.stats());
+        return new PlanFixture(scene, image, r.stats(), r.plan());
     }
 
     static PlanFixture withPlan(String text) throws SceneFormatException {

@@ -38,8 +38,8 @@ class PlanScenesTest {
         PlanFixture with = PlanFixture.render(small(p), java.util.EnumSet.allOf(Skip.class));
         PlanFixture without = PlanFixture.render(small(p), RenderPlan.NO_SKIPS);
         assertSameImage(with.image, without.image, p.toString());
-        assertWithinBound(with.stats, with.scene.plan().bound(), p + " with the plan");
-        assertWithinBound(without.stats, without.scene.plan().bound(), p + " without the plan's skips");
+        assertWithinBound(with.stats, with.plan.bound(), p + " with the plan");
+        assertWithinBound(without.stats, without.plan.bound(), p + " without the plan's skips");
         for (RayKind k : RayKind.values()) {
             assertTrue(with.rays(k) <= without.rays(k), p + ": the plan cast more " + k.key() + " rays than no plan");
         }

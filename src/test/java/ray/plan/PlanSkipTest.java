@@ -38,7 +38,7 @@ class PlanSkipTest {
     private static PlanFixture[] both(String text) throws Exception {
         PlanFixture with = PlanFixture.withPlan(text), without = PlanFixture.withoutPlan(text);
         assertSameImage(with.image, without.image, "with and without the plan's skips");
-        assertWithinBound(with.stats, with.scene.plan().bound(), "with the plan");
+        assertWithinBound(with.stats, with.plan.bound(), "with the plan");
         for (Skip s : Skip.values()) {   // each skip alone changes nothing either
             PlanFixture one = PlanFixture.render(text, EnumSet.of(s));
             assertSameImage(with.image, one.image, "only " + s);
@@ -55,8 +55,8 @@ class PlanSkipTest {
         assertEquals(2 * N, r[0].rays(RayKind.SHADOW), "two lights seen from every point; the dark one skipped");
         assertEquals(3 * N, r[1].rays(RayKind.SHADOW), "without the plan the dark light costs a shadow ray per point");
         // nothing reflects: every hit is a camera hit, so the bound is exact
-        assertEquals(2 * N, r[0].scene.plan().bound().get(RayKind.SHADOW));
-        assertTrue(PlanCommand.report("t", r[0].scene).saved().contains("light 2 (PointLight dark) has zero intensity: skipped"));
+        assertEquals(2 * N, r[0].plan.bound().get(RayKind.SHADOW));
+        assertTrue(PlanReport.of("t", r[0].scene).saved().contains("light 2 (PointLight dark) has zero intensity: skipped"));
     }
 
     @Test
@@ -65,7 +65,7 @@ class PlanSkipTest {
         PlanFixture[] r = both(scene("", black + WALL + LIGHT + LIGHT2));
         assertEquals(0, r[0].rays(RayKind.SHADOW));
         assertEquals(2 * N, r[1].rays(RayKind.SHADOW));
-        assertEquals(0, r[0].scene.plan().bound().get(RayKind.SHADOW));
+        assertEquals(0, r[0].plan.bound().get(RayKind.SHADOW));
         // a highlight alone is a direct term: its shadow rays stay
         String shiny = "Material BlinnPhong m\nVector3d diffuseColor [0 0 0]\nVector3d specularColor [1 1 1]\n\n";
         assertEquals(2 * N, both(scene("", shiny + WALL + LIGHT + LIGHT2))[0].rays(RayKind.SHADOW));
@@ -78,9 +78,9 @@ class PlanSkipTest {
         PlanFixture[] r = both(scene("MaxDepth 3", "Material Glazed m\ndouble mirrorCoefficient 0.7\n\n" + WALL + LIGHT));
         assertEquals(0, r[0].rays(RayKind.SHADOW));
         assertEquals(N, r[0].rays(RayKind.MIRROR), "each reflection flies off into the background");
-        assertEquals(0, r[0].scene.plan().bound().get(RayKind.SHADOW));
-        assertTrue(PlanCommand.report("t", r[0].scene).saved().get(0).startsWith("no shadow rays at the 1 pure mirror (m)"),
-                PlanCommand.report("t", r[0].scene).saved().toString());
+        assertEquals(0, r[0].plan.bound().get(RayKind.SHADOW));
+        assertTrue(PlanReport.of("t", r[0].scene).saved().get(0).startsWith("no shadow rays at the 1 pure mirror (m)"),
+                PlanReport.of("t", r[0].scene).saved().toString());
     }
 
     @Test
@@ -90,7 +90,7 @@ class PlanSkipTest {
         PlanFixture[] r = both(text);
         assertEquals(0, r[0].rays(RayKind.MIRROR));
         assertEquals(2 * N, r[1].rays(RayKind.MIRROR), "without the plan: one ray per bounce to MaxDepth 2");
-        assertEquals(0, r[0].scene.plan().bound().get(RayKind.MIRROR));
+        assertEquals(0, r[0].plan.bound().get(RayKind.MIRROR));
     }
 
     /** Eight Glazed levels, each the base of the next, over a Diffuse base, between two walls. */
@@ -110,9 +110,9 @@ class PlanSkipTest {
         assertEquals((8 + 64) * N, r[1].rays(RayKind.MIRROR), "unfolded: 8 rays per hit, 8^2 at the second bounce");
         assertEquals(3 * N, r[0].rays(RayKind.SHADOW), "one shadow ray per hit: camera hit and two bounces");
         assertEquals((1 + 8 + 64) * N, r[1].rays(RayKind.SHADOW));
-        assertTrue(PlanCommand.report("t", r[0].scene).saved().contains(
+        assertTrue(PlanReport.of("t", r[0].scene).saved().contains(
                 "nested Glazed chain folded at m (8 levels): one mirror ray per hit instead of 8"),
-                PlanCommand.report("t", r[0].scene).saved().toString());
+                PlanReport.of("t", r[0].scene).saved().toString());
     }
 
     @Test
@@ -125,18 +125,26 @@ class PlanSkipTest {
         assertNotNull(CostGate.refusal("t", unfolded), "8^10 paths per pixel: a day of rendering without folding");
     }
 
-    /** Derived once per render: the plan the command line's cost check derived is the one the render uses. */
+    /**
+     * Derived once per render: the plan the command line's cost check derived is the one the render uses,
+     * when it was derived for the settings the render resolves; for other settings the render derives its own.
+     */
     @Test
     void thePlanCheckedBeforeRenderingIsTheOneTheRenderUses() throws Exception {
         ray.Scene s = PlanFixture.parse(scene("", "Material Diffuse m\n\n" + WALL + LIGHT));
-        RenderPlan checked = s.derivePlan();
+        RenderPlan checked = RenderPlan.derive(s, new ray.settings.RenderSettings());
+        ray.render.Renderer r = new ray.render.Renderer(s).plan(checked);
+        r.render();
+        org.junit.jupiter.api.Assertions.assertSame(checked, r.plan());
         new ray.render.Renderer(s).render();
-        org.junit.jupiter.api.Assertions.assertSame(checked, s.plan());
-        new ray.render.Renderer(s).render();
-        org.junit.jupiter.api.Assertions.assertNotSame(checked, s.plan(), "a second render derives its own plan");
-        s.derivePlan();
-        s.planSkips(RenderPlan.NO_SKIPS);   // a setting changed after the check: not the stale plan
-        new ray.render.Renderer(s).render();
-        assertTrue(s.plan().skips().isEmpty());
+        org.junit.jupiter.api.Assertions.assertSame(checked, r.plan(), "another renderer does not change this one's plan");
+        ray.render.Renderer deeper = new ray.render.Renderer(s).settings(new ray.settings.RenderSettings().maxDepth(3)).plan(checked);
+        deeper.render();
+        org.junit.jupiter.api.Assertions.assertNotSame(checked, deeper.plan(), "a plan for other settings is not used");
+        assertEquals(3, deeper.plan().settings().maxDepth());
+        RenderPlan none = RenderPlan.derive(s, new ray.settings.RenderSettings(), RenderPlan.NO_SKIPS);
+        ray.render.Renderer plain = new ray.render.Renderer(s).plan(none);
+        plain.render();
+        assertTrue(plain.plan().skips().isEmpty());
     }
 }

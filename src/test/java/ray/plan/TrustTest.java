@@ -88,7 +88,7 @@ class TrustTest {
         assertEquals(Double.POSITIVE_INFINITY, p.bound().get(RayKind.USER));
         assertEquals(Double.POSITIVE_INFINITY, p.bound().total());
         assertTrue(CostGate.refusal("t", p) == null, "an unknown bound is never refused");
-        PlanReport r = PlanCommand.report("t", s);
+        PlanReport r = PlanReport.of("t", s);
         assertTrue(r.text().stream().anyMatch(l -> l.startsWith("  user rays           on   user classes the plan cannot see into: m,")),
                 String.join("\n", r.text()));
         PlanFixture f = PlanFixture.render(s, EnumSet.allOf(Skip.class));

@@ -8,6 +8,8 @@ import java.util.Random;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import org.junit.jupiter.api.Test;
+import ray.PixelSample;
+import ray.settings.RenderSettings;
 
 /** Where each sampler puts its samples: inside the pixel, the promised number, stratified where claimed. */
 class SamplerTest {
@@ -62,12 +64,11 @@ class SamplerTest {
         assertEquals(1.5 / 3, g.get(7, 9, 5, 1));
         assertEquals(0.5, g.get(7, 9, 5, 2));
         assertEquals(0.5, g.get(7, 9, 5, 7));
-        // the positions the renderer's grid fast path uses
-        double[] off = new double[18];
-        SamplePattern.GRID.offsets(0, 0, 3, off);
+        // the positions the renderer's grid fast path uses: (i + 0.5) / n_s across, (j + 0.5) / n_s down
         for (int i = 0; i < 9; i++) {
-            assertEquals(off[2 * i], g.get(1, 1, i, 0));
-            assertEquals(off[2 * i + 1], g.get(1, 1, i, 1));
+            assertEquals((i % 3 + 0.5) / 3, g.get(1, 1, i, 0));
+            assertEquals((i / 3 + 0.5) / 3, g.get(1, 1, i, 1));
+            assertEquals(GridSampler.gridValue(3, i, 0), g.get(1, 1, i, 0));
         }
     }
 

@@ -3,6 +3,7 @@ package ray.render;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import org.junit.jupiter.api.Test;
+import ray.settings.RenderSettings;
 
 /** Progress counts pixels done, not tiles; the time left is extrapolated from that. */
 class WorkProgressTest {

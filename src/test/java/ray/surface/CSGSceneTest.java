@@ -85,7 +85,7 @@ class CSGSceneTest {
     }
 
     static Image render(String text) throws SceneFormatException {
-        return parse(text).render();
+        return new ray.render.Renderer(parse(text)).render();
     }
 
     /** The common scene with only the named spheres left in it. */

@@ -83,7 +83,7 @@ class MeshSceneTest {
     }
 
     private double[] render(String text) throws SceneFormatException {
-        Image img = parse(text).render();
+        Image img = new ray.render.Renderer(parse(text)).render();
         return img.rgb;
     }
 

@@ -133,6 +133,29 @@ class RenderSessionTest {
         assertTrue(job.stats().get(ray.RayKind.CAMERA) == 40 * 30 * 4, "camera rays: " + job.stats());
     }
 
+    /**
+     * {@code raytracer --view --samples 4 --sampler jittered scene.txt}: the session renders with the
+     * command line's settings over the scene's globals (it used to render the scene's own 2x2 grid), and
+     * the image is the command line renderer's with the same settings.
+     */
+    @Test
+    void theSessionsSettingsOverrideTheScenesGlobals(@TempDir Path dir) throws Exception {
+        Path scene = Files.writeString(dir.resolve("good.txt"), GOOD);
+        ray.settings.RenderSettings cli = new ray.settings.RenderSettings().samples(4).sampler("jittered").maxDepth(0);
+        RenderSession s = new RenderSession(thread::add, events, 2, cli);
+        RenderJob job = s.open(scene);
+        runUntilFinished(job);
+        assertEquals(RenderJob.State.DONE, job.state(), events.log::toString);
+        assertEquals("jittered", job.settings().sampler());
+        assertEquals(4, job.settings().samples());
+        assertEquals(0, job.settings().maxDepth());
+        assertEquals(40 * 30 * 16, job.stats().get(ray.RayKind.CAMERA), "4x4 samples per pixel: " + job.stats());
+        ray.Scene parsed = Parser.parse(scene);
+        assertArrayEquals(new Renderer(parsed).settings(cli).render().rgb, job.image().rgb);
+        assertEquals(2, parsed.samplesPerPixel, "the scene's own global is left as it was read");
+        assertTrue(StatusText.size(job).contains("4x4 AA"), StatusText.size(job));
+    }
+
     @Test
     void badSceneShowsFileAndLineAndKeepsTheLastImage(@TempDir Path dir) throws Exception {
         Path scene = write(dir, "s.txt", GOOD);

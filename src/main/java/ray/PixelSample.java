@@ -1,8 +1,8 @@
-package ray.render;
+package ray;
 
 /**
  * The sample being traced on one render thread: its pixel, its index and the next free dimension of
- * its {@link Sampler} (pbrt-v4's {@code StartPixelSample} / {@code Get1D} / {@code Get2D}). Lives in
+ * its sampler ({@link SampleSource}; pbrt-v4's {@code StartPixelSample} / {@code Get1D} / {@code Get2D}). Lives in
  * {@code TraceContext.sample}, so light and effect code draws its numbers without allocating:
  *
  * <pre>
@@ -17,16 +17,22 @@ package ray.render;
  */
 public final class PixelSample {
 
-    private static final Sampler NONE = new GridSampler(1);
+    /** Outside a render: the centre of everything (sample 0 of a 1 x 1 grid). */
+    private static final SampleSource NONE = new SampleSource() {
+        @Override
+        public double get(int x, int y, int index, int dim) {
+            return 0.5;
+        }
+    };
 
-    private Sampler sampler = NONE;
+    private SampleSource sampler = NONE;
     private int x, y, index;
     private int dim = 2;
     /** The pair the last {@link #next2D()} drew. */
     public double u, v;
 
     /** Starts sample {@code index} of pixel (x, y): the next dimension handed out is 2. */
-    public void start(Sampler s, int px, int py, int sampleIndex) {
+    public void start(SampleSource s, int px, int py, int sampleIndex) {
         sampler = s;
         x = px;
         y = py;

@@ -1,32 +1,31 @@
-package ray.plan;
+package ray.app;
 
 import java.io.PrintStream;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.EnumSet;
 import java.util.List;
 import ray.Scene;
 import ray.parse.Parser;
 import ray.parse.SceneFormatException;
+import ray.plan.CostGate;
+import ray.plan.PlanReport;
+import ray.plan.RenderPlan;
+import ray.settings.RenderSettings;
 
 /**
  * {@code raytracer --plan [--json] scene.txt ...}: prints each scene's render plan without rendering
  * (as text, or one JSON object per scene). Exit status 0 when every scene was read, 1 otherwise.
  */
-public final class PlanCommand {
+final class PlanCommand {
 
     private PlanCommand() {
     }
 
-    public static int run(List<Path> scenes, boolean json, PrintStream out, PrintStream err) {
-        return run(scenes, json, s -> { }, out, err);
-    }
-
     /**
-     * {@link #run(List, boolean, PrintStream, PrintStream)} with the command line's overrides applied to
-     * each scene before it is planned (samples, sampler, the inexact cut of faint paths).
+     * Prints the plan of each scene rendered with {@code settings} (the command line's overrides,
+     * resolved against each scene).
      */
-    public static int run(List<Path> scenes, boolean json, java.util.function.Consumer<Scene> overrides, PrintStream out, PrintStream err) {
+    static int run(List<Path> scenes, boolean json, RenderSettings settings, PrintStream out, PrintStream err) {
         if (scenes.isEmpty()) {
             err.println("raytracer: --plan needs scene files");
             return 2;
@@ -37,11 +36,10 @@ public final class PlanCommand {
             List<String> warnings = new ArrayList<>();
             try {
                 Scene scene = Parser.parse(p, warnings);
-                overrides.accept(scene);
                 for (String w : warnings) {
                     err.println(w);
                 }
-                PlanReport report = report(name, scene);
+                PlanReport report = PlanReport.of(name, scene, settings);
                 if (json) {
                     out.println(report.json());
                 } else {
@@ -61,11 +59,5 @@ public final class PlanCommand {
             }
         }
         return failed == 0 ? 0 : 1;
-    }
-
-    /** The plan of {@code scene} with every exact skip, beside the same scene planned without them. */
-    public static PlanReport report(String name, Scene scene) {
-        return new PlanReport(name, RenderPlan.derive(scene, EnumSet.allOf(Skip.class), scene.cutsFaintPaths()),
-                RenderPlan.derive(scene, RenderPlan.NO_SKIPS));
     }
 }
