@@ -33,8 +33,12 @@ import picocli.CommandLine.Model.CommandSpec;
                 "2:bad command line or test set"})
 public final class GradeCommand implements Callable<Integer> {
 
-    @Option(names = {"-o", "--output"}, paramLabel = "DIR", required = true, description = "where the reports go (created)")
+    @Option(names = {"-o", "--output"}, paramLabel = "DIR", description = "where the reports go (created)")
     Path output;
+
+    @Option(names = "--gradescope", paramLabel = "ROOT", description = "Gradescope's autograder: grade the one submission in "
+            + "ROOT/submission and write ROOT/results/results.json (run_autograder passes /autograder)")
+    Path gradescope;
 
     @Option(names = "--tests", paramLabel = "DIR", description = "a test set (a folder with rubric.txt); default: the course kit's grading/")
     Path tests;
@@ -49,7 +53,7 @@ public final class GradeCommand implements Callable<Integer> {
     @Option(names = "--work", paramLabel = "DIR", description = "scratch space for the child JVMs (default: the system's temporary folder)")
     Path work;
 
-    @Parameters(paramLabel = "SUBMISSION", arity = "1..*", description = "folders or .zip files, one per student")
+    @Parameters(paramLabel = "SUBMISSION", arity = "0..*", description = "folders or .zip files, one per student")
     List<Path> submissions = new ArrayList<>();
 
     @Spec
@@ -90,11 +94,18 @@ public final class GradeCommand implements Callable<Integer> {
             err.println("raytracer grade: --jobs must be at least 1");
             return 2;
         }
+        if (gradescope != null ? output != null || !submissions.isEmpty() : output == null || submissions.isEmpty()) {
+            err.println("raytracer grade: give -o DIR and submissions, or --gradescope ROOT alone (see raytracer grade --help)");
+            return 2;
+        }
         TestSet set;
         Sandbox box;
         try {
             set = TestSet.load(tests != null ? tests : defaultTests());
             box = Sandbox.choose(sandbox);
+            if (gradescope != null) {
+                return gradescope(set, box, out, err);
+            }
             Files.createDirectories(output);
         } catch (IOException e) {
             err.println("raytracer grade: " + e.getMessage());
@@ -115,6 +126,24 @@ public final class GradeCommand implements Callable<Integer> {
         } catch (IOException e) {
             err.println("raytracer grade: " + e.getMessage());
             return 1;
+        }
+    }
+
+    /** One submission, Gradescope's way: ROOT/submission in, ROOT/results/results.json out (its report beside it). */
+    private int gradescope(TestSet set, Sandbox box, PrintStream out, PrintStream err) throws IOException {
+        Path results = Files.createDirectories(gradescope.resolve("results"));
+        Path scratch = work != null ? Files.createDirectories(work) : Path.of(System.getProperty("java.io.tmpdir"));
+        Grader grader = new Grader(set, box, Judge.standard(), Files.createTempDirectory(scratch, "raytracer-grade-"));
+        try {
+            Submission s = Submission.read(gradescope.resolve("submission"));
+            SubmissionResult r = grader.grade(s, results.resolve("report"));
+            Files.writeString(results.resolve("report/index.html"), Reports.studentHtml(r), StandardCharsets.UTF_8);
+            Files.writeString(results.resolve("results.json"), Reports.resultsJson(r), StandardCharsets.UTF_8);
+            out.println(s.name() + ": " + Reports.num(r.score()) + " / " + Reports.num(r.maxScore()));
+            return 0;
+        } finally {
+            grader.close();
+            Grader.deleteTree(grader.work());
         }
     }
 

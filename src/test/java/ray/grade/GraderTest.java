@@ -96,7 +96,7 @@ class GraderTest {
             }
             rubric.append(line.replaceFirst("^(framework|scenes|references|checks)(\\s+)(\\S+)", "$1$2../grading/$3")).append('\n');
         }
-        rubric.append("limit check-seconds 3\nlimit scene-seconds 10\nlimit total-seconds 120\n");
+        rubric.append("limit check-seconds 3\nlimit scene-seconds 5\nlimit total-seconds 120\n");
         Files.writeString(leanTests.resolve("rubric.txt"), rubric);
 
         // bubblewrap where it works (CI installs it); else the fallback, and the containment test is skipped
@@ -276,6 +276,39 @@ class GraderTest {
         assertTrue(csv.contains("\nstub,0,"), csv);
         String page = Reports.classHtml(all, lean.testSet(), "bubblewrap", 1, 2);
         assertTrue(page.contains("Most common failures") && page.contains("Slowest submissions") && page.contains("<svg"));
+    }
+
+    /**
+     * The Gradescope autograder's run_autograder, run by bash against the installed launcher on a fake
+     * /autograder tree (AUTOGRADER_ROOT): the submission in ROOT/submission, results.json in ROOT/results.
+     */
+    @Test
+    void autograderScriptGradesAFakeAutograderTree() throws Exception {
+        String home = System.getProperty("ray.test.installHome");
+        Assumptions.assumeTrue(home != null && Files.isExecutable(Path.of(home, "bin/raytracer")), "no installed launcher");
+        Path root = tmp.resolve("autograder");
+        Path source = Files.createDirectories(root.resolve("source"));
+        Files.copy(Path.of("src/course/autograder/run_autograder"), source.resolve("run_autograder"));
+        Files.createSymbolicLink(source.resolve("raytracer"), Path.of(home).toAbsolutePath());
+        copyTree(tmp.resolve("submissions/upside-down"), root.resolve("submission"));
+        ProcessBuilder pb = new ProcessBuilder("bash", source.resolve("run_autograder").toString()).redirectErrorStream(true);
+        pb.environment().put("AUTOGRADER_ROOT", root.toString());
+        // the lean test set stands in for the kit's: RAYTRACER_OPTS reaches the launcher's JVM
+        Path kit = Files.createDirectories(tmp.resolve("kit-for-autograder"));
+        copyTree(leanTests, kit.resolve("grading"));
+        Files.writeString(kit.resolve("grading/rubric.txt"), Files.readString(leanTests.resolve("rubric.txt")).replace("../grading/",
+                leanTests.getParent().resolve("grading").toAbsolutePath() + "/"));
+        pb.environment().put("RAYTRACER_OPTS", "-Draytracer.course=" + kit.toAbsolutePath());
+        Process p = pb.start();
+        String printed = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        assertEquals(0, p.waitFor(), printed);
+        String json = Files.readString(root.resolve("results/results.json"));
+        Matcher score = Pattern.compile("\"score\": ([0-9.]+),").matcher(json);
+        assertTrue(score.find(), json);
+        assertEquals(results.get("upside-down").score(), Double.parseDouble(score.group(1)), 1e-9, json);
+        assertTrue(json.contains("Camera.getRayThrough: a camera at (1, 2, 3)"), json);
+        assertTrue(Files.isRegularFile(root.resolve("results/report/index.html")));
+        Files.delete(source.resolve("raytracer"));   // the link, not the installation
     }
 
     static String failures(SubmissionResult r) {
