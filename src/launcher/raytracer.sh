@@ -6,6 +6,11 @@
 #   JAVA_HOME                  the Java installation to use (else `java` on the PATH)
 #   JAVA_OPTS, RAYTRACER_OPTS  more JVM options (shell quoting honoured, as in Gradle's scripts)
 #   RAYTRACER_NO_CDS=1         start without the class-data-sharing archive
+#   RAYTRACER_JIT=short|long   the JIT: short = C1 only (DEFAULT_JVM_OPTS), long = full tiered
+#                              compilation (C2); unset: C1, and the program starts this script again
+#                              with RAYTRACER_JIT=long when the render plan says the render is long
+#                              (docs/performance.md, "The JIT policy"); JVM options naming the JIT
+#                              in JAVA_OPTS or RAYTRACER_OPTS are left alone
 
 # The installation: follow symbolic links to this script; its directory's parent.
 app_path=$0
@@ -57,6 +62,20 @@ if [ -n "$JAVA_OPTS$RAYTRACER_OPTS" ]; then
     user_opts=$(printf '%s\n' "$JAVA_OPTS $RAYTRACER_OPTS" | xargs -n1 | sed 's~[^-[:alnum:]+,./:=@_]~\\&~g' | tr '\n' ' ') || exit 1
     eval "set -- $user_opts \"\$@\""
 fi
+
+# The JIT policy (ray.app.JitPolicy): C1 only (DEFAULT_JVM_OPTS) unless RAYTRACER_JIT=long, whose
+# full tiered compilation comes after the build's options and before the user's. Unset, the program may
+# start this script again, by this path (an environment variable: never read by the shell again), with
+# RAYTRACER_JIT=long when its render plan says the render is long, unless the user's options chose a JIT.
+case ${RAYTRACER_JIT-} in
+    long) set -- -XX:TieredStopAtLevel=4 "$@" ;;
+    short) ;;
+    *)
+        case " $JAVA_OPTS $RAYTRACER_OPTS " in
+            *Tiered*|*-Xint*|*-Xcomp*|*-XX:CompilationMode*) ;;
+            *) RAYTRACER_RELAUNCH=$APP_HOME/bin/${app_path##*/}; export RAYTRACER_RELAUNCH ;;
+        esac ;;
+esac
 
 # Class-data sharing (docs/performance.md): skipped when missing, ignored by the JVM when stale. The
 # archive's path is one quoted argument, never read again by the shell.

@@ -88,6 +88,13 @@ public final class Main implements Callable<Integer> {
     @Option(names = "--report-dir", paramLabel = "DIR", description = "with --study: where the CSVs, plots and index.html go")
     Path reportDir;
 
+    /** The command line as given (a long render starts the launcher again with it: {@link JitPolicy}). */
+    private String[] args = new String[0];
+    /** The exit status of the launcher started again for a long render ({@link JitPolicy}), or -1. */
+    private int relaunched = -1;
+    /** Whether this command may still start the launcher again: only before its first scene is rendered. */
+    private boolean mayRelaunch;
+
     private PrintStream out = System.out;
     private PrintStream err = System.err;
     private java.io.InputStream in = System.in;
@@ -105,12 +112,14 @@ public final class Main implements Callable<Integer> {
     static int run(java.io.InputStream in, PrintStream out, PrintStream err, String... args) {
         Main simple = simpleCommandLine(args);
         if (simple != null) {
+            simple.args = args.clone();
             simple.in = in;
             simple.out = out;
             simple.err = err;
             return simple.call();
         }
         Main main = new Main();
+        main.args = args.clone();
         main.in = in;
         main.out = out;
         main.err = err;
@@ -264,8 +273,14 @@ public final class Main implements Callable<Integer> {
             return 2;
         }
         int failed = 0;
+        mayRelaunch = in == System.in && out == System.out && err == System.err && JitPolicy.launcher() != null;
         for (Path scene : scenes) {
-            if (!new SceneJob(this, scene, outputs).run()) {
+            boolean ok = new SceneJob(this, scene, outputs).run();
+            if (relaunched >= 0) {
+                return relaunched;   // the launcher, started again under C2, ran the whole command line
+            }
+            mayRelaunch = false;
+            if (!ok) {
                 failed++;
             }
         }
@@ -301,6 +316,20 @@ public final class Main implements Callable<Integer> {
 
     PrintStream out() {
         return out;
+    }
+
+    /**
+     * Before the first scene's first ray: when that render is long and the launcher allows it, runs the
+     * whole command line again under C2 ({@link JitPolicy}) and returns true (its status is then this
+     * command's); false to render here.
+     */
+    boolean relaunchedForLongRender(ray.plan.RenderPlan plan, String name, boolean fromStdin) {
+        if (!mayRelaunch || fromStdin || !JitPolicy.isLong(plan, name, allowLong)) {
+            return false;
+        }
+        mayRelaunch = false;
+        relaunched = JitPolicy.relaunch(JitPolicy.launcher(), args);
+        return relaunched >= 0;
     }
 
     PrintStream err() {

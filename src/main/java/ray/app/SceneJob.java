@@ -156,6 +156,9 @@ final class SceneJob {
             return fail(name + ": planning the render failed: " + Failures.describe(e));
         }
         try {
+            if (plan != null && main.relaunchedForLongRender(plan, name, Outputs.isStdin(scenePath))) {
+                return true;   // (the launcher started again reports the plan's notes and the render)
+            }
             if (plan != null && !CostGate.check(name, plan, main.allowLong, main.threads, main.quiet, err)) {
                 return false;
             }

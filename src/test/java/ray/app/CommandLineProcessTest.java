@@ -182,4 +182,29 @@ class CommandLineProcessTest {
         assertEquals(List.of("raytracer: no display for the viewer (DISPLAY=nohost.invalid:37 does not answer); "
                 + "give scene files to render (see --help)"), r.errLines());
     }
+
+    /**
+     * The JIT policy (JitPolicy): a long first scene starts the launcher named by RAYTRACER_RELAUNCH again
+     * with RAYTRACER_JIT=long on the same command line, renders nothing itself and ends with that
+     * process's status; a short one renders here and leaves the launcher alone.
+     */
+    @Test
+    void longRenderStartsTheLauncherAgainUnderC2() throws Exception {
+        Path fake = dir.resolve("fake-launcher");
+        Files.writeString(fake, "#!/bin/sh\necho \"$RAYTRACER_JIT|${RAYTRACER_RELAUNCH-unset}|$*\" > " + dir.resolve("relaunched.txt") + "\nexit 7\n");
+        assertTrue(fake.toFile().setExecutable(true));
+        Files.writeString(dir.resolve("long.txt"), "Width 4000\nHeight 3000\nAASamples 3\n\nCamera Camera\n"
+                + "Light PointLight\nVector3d position [0 5 0]\n");   // 108 M camera rays, as many shadow rays
+        Files.writeString(dir.resolve("short.txt"), GOOD);
+        Map<String, String> env = Map.of("RAYTRACER_RELAUNCH", fake.toString());
+        Result r = raytracer(null, env, null, "-q", "long.txt", "short.txt");
+        assertEquals(7, r.status(), r.err());
+        assertEquals("long|unset|-q long.txt short.txt", Files.readString(dir.resolve("relaunched.txt")).trim());
+        assertFalse(Files.exists(dir.resolve("long.png")) || Files.exists(dir.resolve("short.png")), "nothing rendered here");
+        Files.delete(dir.resolve("relaunched.txt"));
+        Result s = raytracer(null, env, null, "-q", "short.txt");
+        assertEquals(0, s.status(), s.err());
+        assertFalse(Files.exists(dir.resolve("relaunched.txt")), "a short first scene renders here");
+        assertTrue(Files.size(dir.resolve("short.png")) > 0);
+    }
 }
