@@ -17,9 +17,10 @@ import java.util.Map;
 import ray.RayKind;
 
 /**
- * {@code raytracer --bench}: renders the benchmark scenes ({@code classic}, {@code mirrors},
- * {@code spheres10k}, {@code mesh100k} from the shared bench directory) as whole processes, the way a
- * user waits for them, and prints Markdown tables:
+ * {@code gradle bench}: renders the benchmark scenes ({@code classic}, {@code mirrors},
+ * {@code spheres10k}, {@code mesh100k} and the long {@code classichd} from the shared bench directory, and
+ * the long {@code mesh1m} it generates, {@link LongScenes}) as whole processes, the way a user waits for
+ * them, and prints Markdown tables:
  * <ul>
  * <li>wall time (median of the timed runs, after one warm-up run), the process's CPU time, and the
  * parse / build / render / write split, rays cast by kind, render rays per second, peak RSS and BVH
@@ -28,7 +29,8 @@ import ray.RayKind;
  * after warm-up; {@link Throughput});</li>
  * <li>with {@code --peers}: the installed peer renderers (POV-Ray, Tachyon, Sunflow, Mitsuba 3, as
  * {@code peers/run_peers.sh} runs them) timed in the same rounds, interleaved with this program, and
- * the ratio of this program's median to each peer's; and Embree's closest-hit and any-hit rates
+ * the ratio of this program's median wall and CPU time to each peer's, on every scene the peers' translator
+ * has translated (run_peers.sh translate; not mesh1m: it has no area lights); and Embree's closest-hit and any-hit rates
  * ({@code peers/embree_rays.py}) next to this program's on the mesh100k camera rays.</li>
  * </ul>
  * Timings on a shared machine move by tens of percent; only the ratios measured in one run, with
@@ -37,7 +39,14 @@ import ray.RayKind;
  */
 public final class Bench {
 
-    public static final List<String> SCENES = List.of("classic", "mirrors", "spheres10k", "mesh100k");
+    /** The peers' four benchmark scenes: renders of about a second, where start-up counts. */
+    public static final List<String> SHORT_SCENES = List.of("classic", "mirrors", "spheres10k", "mesh100k");
+    /**
+     * The long renders, where the steady state counts: classichd (the bench directory's classic scene at
+     * 1920x1440, 4x4 samples) and mesh1m ({@link LongScenes}, generated into the work directory).
+     */
+    public static final List<String> LONG_SCENES = List.of("classichd", LongScenes.MESH1M);
+    public static final List<String> SCENES = List.of("classic", "mirrors", "spheres10k", "mesh100k", "classichd", LongScenes.MESH1M);
 
     private final PrintStream out;
     private final PrintStream err;
@@ -175,11 +184,15 @@ public final class Bench {
     }
 
     private int report() throws IOException, InterruptedException {
-        Path sceneDir = sceneDirectory();
+        Map<String, Path> scenePaths = scenePaths();
         out.println("# gradle bench");
         out.println();
         out.println("- command: `" + String.join(" ", self) + " -q --stats --json SCENE -o PNG`");
-        out.println("- scenes: " + sceneDir.toAbsolutePath().normalize());
+        java.util.Set<Path> dirs = new java.util.LinkedHashSet<>();
+        for (Path p : scenePaths.values()) {
+            dirs.add(p.toAbsolutePath().normalize().getParent());
+        }
+        out.println("- scenes: " + String.join(", ", scenes) + " in " + dirs.stream().map(Path::toString).collect(java.util.stream.Collectors.joining(", ")));
         out.println("- machine: " + Runtime.getRuntime().availableProcessors() + " cores, " + Machine.cpuName() + "; "
                 + System.getProperty("java.vm.name") + " " + System.getProperty("java.version"));
         out.println("- load average before: " + Machine.loadAverage() + "; parallel check (2 processes' wall / 1; 1.0 = two free cores): "
@@ -188,11 +201,19 @@ public final class Bench {
         Map<String, List<String>> peerCmds = new LinkedHashMap<>();
         if (withPeers) {
             for (String p : Peers.ALL) {
-                if (peers.available(p)) {
+                List<String> missing = new ArrayList<>();
+                for (String s : scenes) {
+                    if (!peers.available(p, s)) {
+                        missing.add(s);
+                    }
+                }
+                if (missing.size() < scenes.size()) {
                     peerCmds.put(p, null);
-                } else {
+                }
+                if (!missing.isEmpty()) {
                     out.println("- peer " + Peers.NAMES.get(p) + ": not installed or not translated in " + benchDir
-                            + " (bash peers/run_peers.sh install scenes translate), left out");
+                            + " for " + String.join(", ", missing) + " (bash peers/run_peers.sh install scenes translate;"
+                            + " mesh1m has an area light, which the translator does not know), left out there");
                 }
             }
         }
@@ -202,11 +223,12 @@ public final class Bench {
         out.println();
 
         Map<String, Map<String, List<Double>>> times = new LinkedHashMap<>();
+        Map<String, Map<String, List<Double>>> cpus = new LinkedHashMap<>();
         Map<String, List<Stats>> stats = new LinkedHashMap<>();
         int failures = 0;
         for (int round = 0; round <= runs; round++) {
             for (String s : scenes) {
-                Path scene = sceneDir.resolve(s + ".txt");
+                Path scene = scenePaths.get(s);
                 List<String> cmd = new ArrayList<>(self);
                 cmd.addAll(List.of("-q", "--stats", "--json", scene.toAbsolutePath().toString(), "-o", work.resolve(s + ".png").toAbsolutePath().toString()));
                 Path log = work.resolve(s + ".log");
@@ -229,15 +251,22 @@ public final class Bench {
                 }
                 if (round > 0) {
                     times.computeIfAbsent(s, k -> new LinkedHashMap<>()).computeIfAbsent("raytracer", k -> new ArrayList<>()).add(t);
+                    cpus.computeIfAbsent(s, k -> new LinkedHashMap<>()).computeIfAbsent("raytracer", k -> new ArrayList<>()).add(cpu);
                     stats.computeIfAbsent(s, k -> new ArrayList<>()).add(st);
                     if (base != null && base[0] >= 0) {
                         baseline.record(s, t, cpu, base[0], base[1]);
                     }
                 }
                 for (String p : peerCmds.keySet()) {
+                    if (!peers.available(p, s)) {
+                        continue;
+                    }
+                    double pcpu0 = Baseline.childCpuSeconds();
                     double pt = time(peers.command(p, s), benchDir, work.resolve(s + "_" + p + ".log"));
+                    double pcpu = Baseline.childCpuSeconds() - pcpu0;
                     if (round > 0 && pt >= 0) {
                         times.get(s).computeIfAbsent(p, k -> new ArrayList<>()).add(pt);
+                        cpus.get(s).computeIfAbsent(p, k -> new ArrayList<>()).add(pcpu);
                     }
                 }
             }
@@ -249,16 +278,31 @@ public final class Bench {
             baseline.print(out, scenes);
         }
         if (!peerCmds.isEmpty()) {
-            peers.printTable(out, runs, times, peerCmds.keySet());
+            peers.printTable(out, runs, times, cpus, peerCmds.keySet());
         }
-        new InProcessTables(out, work, benchDir, scenes, withPeers, peers).print(sceneDir);
+        List<String> inProcess = new ArrayList<>(scenes);
+        inProcess.removeAll(LONG_SCENES);   // (their rays per kind are the short scenes' own: classichd is classic)
+        if (!inProcess.isEmpty()) {
+            new InProcessTables(out, work, benchDir, inProcess, withPeers, peers).print(scenePaths);
+        }
         return failures == 0 ? 0 : 1;
     }
 
     // ---- scenes ----
 
-    private Path sceneDirectory() throws IOException, InterruptedException {
-        return sceneDirectory(benchDir, work, scenes, out);
+    /**
+     * Each benchmark scene's file: the short ones and classichd from the bench directory (or generated,
+     * {@link #sceneDirectory}), mesh1m written into the work directory ({@link LongScenes}).
+     */
+    private Map<String, Path> scenePaths() throws IOException, InterruptedException {
+        List<String> fromBench = new ArrayList<>(scenes);
+        fromBench.remove(LongScenes.MESH1M);
+        Map<String, Path> paths = new LinkedHashMap<>();
+        Path dir = fromBench.isEmpty() ? null : sceneDirectory(benchDir, work, fromBench, out);
+        for (String s : scenes) {
+            paths.put(s, s.equals(LongScenes.MESH1M) ? LongScenes.mesh1m(work.resolve("scenes"), out) : dir.resolve(s + ".txt"));
+        }
+        return paths;
     }
 
     /** The default work directory: raytracer-bench in the temporary directory. */
@@ -278,6 +322,12 @@ public final class Bench {
             return shared;
         }
         Path generated = work.resolve("scenes");
+        Files.createDirectories(generated);
+        for (String s : scenes) {   // those the bench directory keeps (classichd), beside those generated
+            if (Files.isRegularFile(shared.resolve(s + ".txt"))) {
+                Files.copy(shared.resolve(s + ".txt"), generated.resolve(s + ".txt"), StandardCopyOption.REPLACE_EXISTING);
+            }
+        }
         if (scenes.stream().allMatch(s -> Files.isRegularFile(generated.resolve(s + ".txt")))) {
             return generated;
         }
@@ -406,7 +456,8 @@ public final class Bench {
     }
 
     private void printProcessTable(Map<String, Map<String, List<Double>>> times, Map<String, List<Stats>> stats) {
-        out.println("## Whole process (median of " + runs + "; the split and memory as the process reports them)");
+        out.println("## Whole process (median of " + runs + "; cpu: all the process's threads, JIT and GC included;"
+                + " the split and memory as the process reports them)");
         out.println();
         out.println("| scene | wall s | cpu s | parse s | build s | render s | write s | rays by kind (M) | render Mrays/s (all threads) | peak RSS MiB | BVH bytes/primitive |");
         out.println("|---|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|");

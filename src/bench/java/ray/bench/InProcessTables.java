@@ -53,7 +53,7 @@ final class InProcessTables {
     }
 
     /** The rays-by-kind and allocation tables, and (with the peers' venv) the Embree comparison. */
-    void print(Path sceneDir) throws IOException, InterruptedException {
+    void print(java.util.Map<String, Path> scenePaths) throws IOException, InterruptedException {
         out.println("## Rays per second by kind, acceleration structure alone (1 thread, after warm-up)");
         out.println();
         out.println("Camera rays at pixel centres (closest hit with the hit record filled in) and every ray a render of "
@@ -72,7 +72,7 @@ final class InProcessTables {
             for (boolean c2 : new boolean[] {false, true}) {
                 Path log = work.resolve("throughput.log");
                 String name = s + ", " + (c2 ? "C2" : "C1");
-                double t = Bench.time(throughputCommand(c2, "--row", name, sceneDir.resolve(s + ".txt").toAbsolutePath().toString()), work, log);
+                double t = Bench.time(throughputCommand(c2, "--row", name, scenePaths.get(s).toAbsolutePath().toString()), work, log);
                 String text = Files.readString(log, StandardCharsets.UTF_8).trim();
                 out.println(t >= 0 && text.startsWith("|") ? text : "| " + name + " | failed |  |  |  |");
             }
@@ -87,7 +87,7 @@ final class InProcessTables {
         out.println("|---|---:|---:|---:|");
         for (String s : scenes) {
             Path log = work.resolve("alloc.log");
-            double t = Bench.time(throughputCommand(false, "--alloc", sceneDir.resolve(s + ".txt").toAbsolutePath().toString()), work, log);
+            double t = Bench.time(throughputCommand(false, "--alloc", scenePaths.get(s).toAbsolutePath().toString()), work, log);
             String[] f = Files.readString(log, StandardCharsets.UTF_8).trim().split(" ");
             if (t < 0 || f.length != 5 || !f[0].equals("alloc")) {
                 out.println("| " + s + " | failed |  |  |");
@@ -98,7 +98,7 @@ final class InProcessTables {
         }
         out.println();
         if (scenes.contains("mesh100k")) {
-            embreeComparison(sceneDir.resolve("mesh100k.txt"));
+            embreeComparison(scenePaths.get("mesh100k"));
         }
     }
 

@@ -37,20 +37,19 @@ final class Peers {
         return venv.resolve("bin/python");
     }
 
-    /** Whether peer {@code p} is installed and its scenes translated. */
-    boolean available(String p) {
-        String first = scenes.get(0);
+    /** Whether peer {@code p} is installed and scene {@code s} translated for it. */
+    boolean available(String p, String s) {
         switch (p) {
             case "pov":
-                return onPath("povray") && Files.isRegularFile(benchDir.resolve("peers/build/pov/" + first + ".pov"));
+                return onPath("povray") && Files.isRegularFile(benchDir.resolve("peers/build/pov/" + s + ".pov"));
             case "tachyon":
-                return onPath("tachyon-nox") && Files.isRegularFile(benchDir.resolve("peers/build/tachyon/" + first + ".dat"));
+                return onPath("tachyon-nox") && Files.isRegularFile(benchDir.resolve("peers/build/tachyon/" + s + ".dat"));
             case "sunflow":
                 return Files.isRegularFile(Path.of("/usr/share/java/sunflow.jar"))
                         && Files.isRegularFile(benchDir.resolve("peers/sunflow/SunflowRender.class"))
-                        && Files.isRegularFile(benchDir.resolve("peers/build/sunflow/" + first + ".sc"));
+                        && Files.isRegularFile(benchDir.resolve("peers/build/sunflow/" + s + ".sc"));
             default:
-                return Files.isExecutable(venvPython()) && Files.isRegularFile(benchDir.resolve("peers/build/mitsuba/" + first + ".xml"));
+                return Files.isExecutable(venvPython()) && Files.isRegularFile(benchDir.resolve("peers/build/mitsuba/" + s + ".xml"));
         }
     }
 
@@ -83,32 +82,48 @@ final class Peers {
         return false;
     }
 
-    /** The ratio table: this program's median wall time over each peer's, scene by scene. */
-    void printTable(PrintStream out, int runs, Map<String, Map<String, List<Double>>> times, java.util.Set<String> peers) {
+    /**
+     * The ratio tables: this program's median wall and CPU time over each peer's, scene by scene (n/a where
+     * the peer has no translation of the scene).
+     */
+    void printTable(PrintStream out, int runs, Map<String, Map<String, List<Double>>> times,
+                    Map<String, Map<String, List<Double>>> cpus, java.util.Set<String> peers) {
         out.println("## Against the peers (whole process, median of " + runs + ", interleaved in the same rounds)");
         out.println();
-        StringBuilder h = new StringBuilder("| scene | raytracer s |");
-        StringBuilder sep = new StringBuilder("|---|---:|");
-        for (String p : peers) {
-            h.append(' ').append(NAMES.get(p)).append(" s | ratio |");
-            sep.append("---:|---:|");
-        }
-        out.println(h);
-        out.println(sep);
-        for (String s : scenes) {
-            Map<String, List<Double>> t = times.get(s);
-            if (t == null) {
-                continue;
-            }
-            double ours = Bench.median(t.getOrDefault("raytracer", List.of()));
-            StringBuilder row = new StringBuilder(String.format(Locale.ROOT, "| %s | %.2f |", s, ours));
-            for (String p : peers) {
-                double theirs = Bench.median(t.getOrDefault(p, List.of()));
-                row.append(String.format(Locale.ROOT, " %.2f | %.2f |", theirs, ours / theirs));
-            }
-            out.println(row);
-        }
+        out.println("Wall time, then CPU time (user + system of all the process's threads, from the bench's own "
+                + "/proc/self/stat children counters, in 10 ms ticks).");
         out.println();
+        for (boolean cpu : new boolean[] {false, true}) {
+            String unit = cpu ? "cpu s" : "wall s";
+            StringBuilder h = new StringBuilder("| scene | raytracer " + unit + " |");
+            StringBuilder sep = new StringBuilder("|---|---:|");
+            for (String p : peers) {
+                h.append(' ').append(NAMES.get(p)).append(' ').append(unit).append(" | ratio |");
+                sep.append("---:|---:|");
+            }
+            out.println(h);
+            out.println(sep);
+            Map<String, Map<String, List<Double>>> m = cpu ? cpus : times;
+            for (String s : scenes) {
+                Map<String, List<Double>> t = m.get(s);
+                if (t == null) {
+                    continue;
+                }
+                double ours = Bench.median(t.getOrDefault("raytracer", List.of()));
+                StringBuilder row = new StringBuilder(String.format(Locale.ROOT, "| %s | %.2f |", s, ours));
+                for (String p : peers) {
+                    List<Double> l = t.get(p);
+                    if (l == null || l.isEmpty()) {
+                        row.append(" n/a | n/a |");
+                        continue;
+                    }
+                    double theirs = Bench.median(l);
+                    row.append(String.format(Locale.ROOT, " %.2f | %.2f |", theirs, ours / theirs));
+                }
+                out.println(row);
+            }
+            out.println();
+        }
         out.println("ratio = raytracer's median / the peer's median: below 1 the raytracer was faster.");
         out.println();
     }

@@ -1,7 +1,5 @@
 package ray.bench;
 
-import java.io.BufferedWriter;
-import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -43,9 +41,9 @@ public final class MeshLoad {
     }
 
     private static void run(Path dir, int quads) throws Exception {
-        int slices = (int) Math.round(Math.sqrt(2.0 * quads)), stacks = Math.max(2, quads / slices);
+        int[] g = BumpyMesh.grid(quads);
         Path obj = dir.resolve("bumpy.obj");
-        writeObj(obj, slices, stacks);
+        BumpyMesh.writeObj(obj, g[0], g[1]);
         String scene = "Width 400\nHeight 300\nAmbientLight [0.1 0.1 0.1]\n\nCamera Camera\nVector3d eye [0 0.5 3.2]\n\n"
                 + "Light PointLight\nVector3d position [3 4 5]\nVector3d intensity [30 30 30]\n\n"
                 + "Material Diffuse grey\nVector3d diffuseColor [0.7 0.7 0.7]\n\n"
@@ -109,35 +107,5 @@ public final class MeshLoad {
             Thread.sleep(50);
         }
         return r.totalMemory() - r.freeMemory();
-    }
-
-    /** A bumpy sphere: quads between latitude rings, triangles at the poles, outward, with normals. */
-    private static void writeObj(Path p, int slices, int stacks) throws IOException {
-        try (BufferedWriter w = Files.newBufferedWriter(p)) {
-            w.write("v 0 1 0\nvn 0 1 0\n");
-            for (int i = 1; i < stacks; i++) {
-                double th = Math.PI * i / stacks;
-                for (int j = 0; j < slices; j++) {
-                    double ph = 2 * Math.PI * j / slices;
-                    double r = 1 + 0.08 * Math.sin(7 * th) * Math.cos(5 * ph) + 0.03 * Math.sin(23 * th + 17 * ph);
-                    double x = Math.sin(th) * Math.cos(ph), y = Math.cos(th), z = -Math.sin(th) * Math.sin(ph);
-                    w.write(String.format(Locale.ROOT, "v %.6f %.6f %.6f\nvn %.4f %.4f %.4f\n", r * x, r * y, r * z, x, y, z));
-                }
-            }
-            w.write("v 0 -1 0\nvn 0 -1 0\n");
-            int south = 2 + (stacks - 1) * slices;
-            for (int j = 0; j < slices; j++) {
-                int j1 = (j + 1) % slices;
-                w.write("f 1//1 " + (2 + j) + "//" + (2 + j) + " " + (2 + j1) + "//" + (2 + j1) + "\n");
-                for (int i = 1; i + 1 < stacks; i++) {
-                    int a = 2 + (i - 1) * slices, b = 2 + i * slices;
-                    w.write("f " + (a + j) + "//" + (a + j) + " " + (b + j) + "//" + (b + j) + " " + (b + j1) + "//" + (b + j1)
-                            + " " + (a + j1) + "//" + (a + j1) + "\n");
-                }
-                int last = 2 + (stacks - 2) * slices;
-                w.write("f " + (last + j) + "//" + (last + j) + " " + south + "//" + south + " " + (last + j1) + "//"
-                        + (last + j1) + "\n");
-            }
-        }
     }
 }
