@@ -15,4 +15,17 @@ public interface Accelerator {
 
     /** True when any surface is hit with t in the ray's span (shadow rays; may stop at the first hit). */
     boolean anyHit(Ray ray, TraceContext ctx);
+
+    /**
+     * {@link #anyHit(Ray, TraceContext)} for a caller that casts many similar shadow rays: rays toward
+     * one light from neighbouring points, say, told apart by {@code cacheSlot} (0 to {@link #CACHE_SLOTS} - 1;
+     * another value: no cache). The answer is the same; an accelerator may remember, per thread and
+     * slot, the primitive that answered last and test it first (an occluder cache).
+     */
+    default boolean anyHit(Ray ray, TraceContext ctx, int cacheSlot) {
+        return anyHit(ray, ctx);
+    }
+
+    /** Slots of the occluder cache {@link #anyHit(Ray, TraceContext, int)} may keep. */
+    int CACHE_SLOTS = 16;
 }

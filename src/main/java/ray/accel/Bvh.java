@@ -22,8 +22,11 @@ import ray.surface.Surface;
  *
  * <p>Traversal: an inner node holds both children's boxes, so one visit tests both; the closest-hit
  * query descends into the nearer child first and keeps the farther one, with its entry distance, on
- * a stack, dropping it when a closer hit has been found meanwhile. The any-hit (shadow) query stops
- * at the first hit. Box tests use the ray's direction signs to pick the near and far slab planes (no
+ * a stack, dropping it when a closer hit has been found meanwhile. The any-hit (shadow) query also
+ * descends into the nearer child first (nearer occluders are found sooner: classic's shadow rays 1.2x,
+ * mesh100k's 1.05x in docs/performance.md) and stops at the first hit; with an occluder-cache slot
+ * ({@link #anyHit(Ray, TraceContext, int)}) it first tests the primitive that stopped the slot's last
+ * shadowed query. Box tests use the ray's direction signs to pick the near and far slab planes (no
  * min/max) and leave the interval unchanged when a slab distance is NaN, so they stay conservative.
  * A leaf's slots are grouped by set, and each run of one set's slots is handed to that set. Where two
  * primitives are hit at exactly the same t, the one in the earlier leaf slot wins, whatever the order
@@ -340,16 +343,43 @@ public final class Bvh implements Accelerator {
 
     @Override
     public boolean anyHit(Ray ray, TraceContext ctx) {
+        return anyHit(ray, ctx, -1);
+    }
+
+    /**
+     * The any-hit query with the occluder cache: the primitive that answered this thread's last query
+     * of {@code slot} is tested first, and a hit there ends the query; otherwise the traversal runs as
+     * always and remembers the primitive it stops at. The answer is the traversal's (the box tests are
+     * conservative, so whatever the cached primitive's own test hits, the traversal would reach too).
+     */
+    @Override
+    public boolean anyHit(Ray ray, TraceContext ctx, int slot) {
         RayQuery q = query(ctx);
         q.startAny(ray);
         if (unbounded != null && unbounded.anyHit(0, unbounded.size(), q)) {
             return true;
+        }
+        boolean cache = slot >= 0 && slot < CACHE_SLOTS;
+        if (cache) {
+            int cs = q.occluderSet[slot];
+            if (cs >= 0) {
+                int ci = q.occluderIndex[slot];
+                if (COUNT) {
+                    q.primitiveTests++;
+                }
+                if (sets[cs].anyHit(ci, ci + 1, q)) {
+                    return true;
+                }
+            }
         }
         double ox = q.ox, oy = q.oy, oz = q.oz, tMin = q.tMin, tMax = q.tMax;
         double ix = 1 / q.dx, iy = 1 / q.dy, iz = 1 / q.dz;
         int nx = ix < 0 ? 3 : 0, ny = iy < 0 ? 4 : 1, nz = iz < 0 ? 5 : 2;
         int fx = 3 - nx, fy = 5 - ny, fz = 7 - nz;
         if (root < 0 && !(slabs(rootBox, 0, nx, ny, nz, fx, fy, fz, ox, oy, oz, ix, iy, iz, tMin, tMax) <= Double.MAX_VALUE)) {
+            if (cache) {
+                q.occluderSet[slot] = -1;
+            }
             return false;
         }
         float[] nb = nodeBox;
@@ -363,9 +393,15 @@ public final class Bvh implements Accelerator {
                 if (COUNT) {
                     q.nodeVisits++;
                 }
-                boolean h0 = slabs(nb, o, nx, ny, nz, fx, fy, fz, ox, oy, oz, ix, iy, iz, tMin, tMax) <= Double.MAX_VALUE;
-                boolean h1 = slabs(nb, o + 6, nx, ny, nz, fx, fy, fz, ox, oy, oz, ix, iy, iz, tMin, tMax) <= Double.MAX_VALUE;
+                double lo0 = slabs(nb, o, nx, ny, nz, fx, fy, fz, ox, oy, oz, ix, iy, iz, tMin, tMax);
+                double lo1 = slabs(nb, o + 6, nx, ny, nz, fx, fy, fz, ox, oy, oz, ix, iy, iz, tMin, tMax);
+                boolean h0 = lo0 <= Double.MAX_VALUE, h1 = lo1 <= Double.MAX_VALUE;
                 if (h0) {
+                    if (h1 && lo1 < lo0) {
+                        stack[sp++] = nc[2 * ref];
+                        ref = nc[2 * ref + 1];
+                        continue;
+                    }
                     if (h1) {
                         stack[sp++] = nc[2 * ref + 1];
                     }
@@ -383,16 +419,38 @@ public final class Bvh implements Accelerator {
                         q.primitiveTests += len;
                     }
                     if (ps[r >>> 4].anyHit(from, from + len, q)) {
+                        if (cache) {
+                            remember(q, slot, r >>> 4, from, len);
+                        }
                         return true;
                     }
                     i += len;
                 }
             }
             if (sp == 0) {
+                if (cache) {
+                    q.occluderSet[slot] = -1;   // unshadowed: the next ray of this slot traverses at once
+                }
                 return false;
             }
             ref = stack[--sp];
         }
+    }
+
+    /** Caches, for {@code slot}, the primitive of set {@code set} among {@code from..from+len-1} that the ray hits. */
+    private void remember(RayQuery q, int slot, int set, int from, int len) {
+        int hit = from;
+        for (int i = from; len > 1 && i < from + len; i++) {   // (a run of one: no test to repeat)
+            if (COUNT) {
+                q.primitiveTests++;
+            }
+            if (sets[set].anyHit(i, i + 1, q)) {
+                hit = i;
+                break;
+            }
+        }
+        q.occluderSet[slot] = set;
+        q.occluderIndex[slot] = hit;
     }
 
     /**

@@ -35,6 +35,12 @@ public final class RayQuery {
     PrimitiveSet hitSet;
     int hitIndex, hitSlot;
 
+    /**
+     * The occluder cache: per slot of {@link Accelerator#anyHit(Ray, ray.TraceContext, int)}, the set
+     * (-1: none yet) and index of the primitive that last answered an any-hit query.
+     */
+    final int[] occluderSet = new int[Accelerator.CACHE_SLOTS], occluderIndex = new int[Accelerator.CACHE_SLOTS];
+
     /** Traversal stack of node references, and (closest hit) their entry distances. */
     final int[] stack = new int[128];
     final double[] stackT = new double[128];
@@ -46,6 +52,7 @@ public final class RayQuery {
         this.owner = owner;
         this.scene = scene;
         this.scratch = new double[Math.max(1, sets) * PrimitiveSet.SCRATCH];
+        java.util.Arrays.fill(occluderSet, -1);
     }
 
     /** Starts a closest-hit query of {@code r}, to be filled into {@code rec}. */

@@ -272,7 +272,19 @@ class BvhTest {
                 assertEquals(1, rec.normal.length(), 1e-9, where + ": unit normal");
                 assertTrue(rec.normal.dot(ray.direction) <= 0, where + ": normal faces the ray");
             }
-            assertEquals(bruteAny(surfaces, ray, scene), bvh.anyHit(copy(ray), ctx), where + ": anyHit");
+            boolean any = bruteAny(surfaces, ray, scene);
+            assertEquals(any, bvh.anyHit(copy(ray), ctx), where + ": anyHit");
+            // the occluder cache: the same answers with a slot, whatever the slot remembers from earlier
+            // rays; asked again, a hit comes from the remembered primitive; shortened to end before its
+            // closest hit, the remembered primitive must not answer for it
+            int slot = i % 3;
+            assertEquals(any, bvh.anyHit(copy(ray), ctx, slot), where + ": anyHit, cache slot " + slot);
+            assertEquals(any, bvh.anyHit(copy(ray), ctx, slot), where + ": anyHit again, cache slot " + slot);
+            if (expected != null) {
+                Ray shorter = copy(ray);
+                shorter.tMax = expected.t * (1 - 1e-6);
+                assertEquals(bruteAny(surfaces, shorter, scene), bvh.anyHit(shorter, ctx, slot), where + ": anyHit short of the hit, slot " + slot);
+            }
         }
         return hits;
     }
