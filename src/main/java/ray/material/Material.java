@@ -18,7 +18,8 @@ import ray.plan.Term;
  * <p>The renderer calls the allocation-free {@link #shade(Ray, IntersectionRecord, Scene,
  * TraceContext, Vector3d)}; its default calls {@link #shade(Ray, IntersectionRecord, Scene)}, so a
  * material written against the framework works unchanged. Built-in materials implement the fast form
- * and let the framework form call it.
+ * and let the framework form call it. A framework-form {@code shade} that returns null or a NaN colour stops
+ * the render with a {@link BadColorException} naming the class and the pixel.
  */
 public abstract class Material implements SceneObject {
 
@@ -35,11 +36,12 @@ public abstract class Material implements SceneObject {
         ctx.level = Math.max(ctx.level, ray.depth) + 1;
         try {
             Vector3d c = shade(ray, record, scene);
-            if (c == null) {
-                out.set(0, 0, 0);
-            } else {
-                out.set(c);
+            // the one check of a user's colour (built-in materials override this method and never pass here):
+            // null or NaN stops the render with the class, the method and the pixel, not a silently black pixel
+            if (c == null || Double.isNaN(c.x) || Double.isNaN(c.y) || Double.isNaN(c.z)) {
+                throw new BadColorException(this, c, ctx.sample.x(), ctx.sample.y());
             }
+            out.set(c);
         } finally {
             ctx.level = saved;
         }
