@@ -143,7 +143,7 @@ public final class ImageJudge {
             int[] bias = findBias();
             int biasedTiles = bias[0], biasWrong = bias[1];
             int wrongCount = edgeWrong + offWrong + biasWrong;
-            int content = contentPixels(tol);
+            int content = contentPixels(r, tol);
             double[] flip = Flip.errorMap(refImage, candImage, policy.pixelsPerDegree());
             double flipMean = Flip.mean(flip);
             double wrongShare = (double) wrongCount / n;
@@ -316,31 +316,6 @@ public final class ImageJudge {
             return new int[] {tiles, marked};
         }
 
-        /** Pixels that differ from the reference's most common 8-bit colour by more than the tolerance (at least 1). */
-        int contentPixels(double tol) {
-            Map<Integer, Integer> counts = new HashMap<>();
-            int mode = 0, best = -1;
-            for (int p = 0; p < n; p++) {
-                int key = (int) Math.round(r[3 * p]) << 16 | (int) Math.round(r[3 * p + 1]) << 8 | (int) Math.round(r[3 * p + 2]);
-                int k = counts.merge(key, 1, Integer::sum);
-                if (k > best) {
-                    best = k;
-                    mode = key;
-                }
-            }
-            double[] bg = {mode >> 16 & 255, mode >> 8 & 255, mode & 255};
-            int content = 0;
-            for (int p = 0; p < n; p++) {
-                for (int ch = 0; ch < 3; ch++) {
-                    if (Math.abs(r[3 * p + ch] - bg[ch]) > tol) {
-                        content++;
-                        break;
-                    }
-                }
-            }
-            return Math.max(1, content);
-        }
-
         /**
          * How many wrong pixels fall in each class (OTHER, EDGE, HIGHLIGHT, SHADOW). A connected area of wrong
          * pixels (8-neighbours) takes one class for all its pixels: EDGE when at least three quarters of its
@@ -476,6 +451,35 @@ public final class ImageJudge {
             }
             return String.format("x %d-%d, y %d-%d", x0, x1, y0, y1);
         }
+    }
+
+    /**
+     * The picture's content: pixels that differ from the image's most common 8-bit colour (its background) by
+     * more than {@code tol} steps in some channel; at least 1. {@code r}: channel values in steps.
+     */
+    static int contentPixels(double[] r, double tol) {
+        int n = r.length / 3;
+        Map<Integer, Integer> counts = new HashMap<>();
+        int mode = 0, best = -1;
+        for (int p = 0; p < n; p++) {
+            int key = (int) Math.round(r[3 * p]) << 16 | (int) Math.round(r[3 * p + 1]) << 8 | (int) Math.round(r[3 * p + 2]);
+            int k = counts.merge(key, 1, Integer::sum);
+            if (k > best) {
+                best = k;
+                mode = key;
+            }
+        }
+        double[] bg = {mode >> 16 & 255, mode >> 8 & 255, mode & 255};
+        int content = 0;
+        for (int p = 0; p < n; p++) {
+            for (int ch = 0; ch < 3; ch++) {
+                if (Math.abs(r[3 * p + ch] - bg[ch]) > tol) {
+                    content++;
+                    break;
+                }
+            }
+        }
+        return Math.max(1, content);
     }
 
     static double[] steps(Image img) {

@@ -92,6 +92,20 @@ public final class Film {
         return (m2[i] + m2[i + 1] + m2[i + 2]) / (3.0 * (n - 1) * n) * 255 * 255;
     }
 
+    /** The mean of pixel (x, y)'s samples clamped to [0, 1] in channel c (0 r, 1 g, 2 b): the value the variance belongs to. */
+    public double clampedMean(int x, int y, int c) {
+        return clampedMean[3 * (y * width + x) + c];
+    }
+
+    /**
+     * The sample variance s^2 (denominator n - 1) of pixel (x, y)'s clamped samples in channel c, in units of
+     * the [0, 1] range squared; NaN with fewer than two samples.
+     */
+    public double sampleVariance(int x, int y, int c) {
+        int n = count[y * width + x];
+        return n < 2 ? Double.NaN : m2[3 * (y * width + x) + c] / (n - 1);
+    }
+
     /** Writes the pixels' means into {@code image} (same size). */
     public void writeTo(Image image) {
         for (int p = 0, n = width * height; p < n; p++) {

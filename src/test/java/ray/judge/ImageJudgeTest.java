@@ -23,7 +23,7 @@ class ImageJudgeTest {
 
     static Judgement judge(Image candidate, String what) {
         Judgement j = ImageJudge.judge(reference, candidate);
-        System.out.println(what + ": largest difference " + JudgeScenes.maxDifference(reference, candidate) + "; " + j.message() + " | " + j.where() + " " + j.metrics());
+        System.out.println(what + ": largest difference " + JudgeScenes.maxDifference(reference, candidate) + "; " + j.message() + " | " + j.where());
         return j;
     }
 
