@@ -11,9 +11,9 @@ import ray.Ray;
 import ray.Scene;
 import ray.parse.Parser;
 import ray.render.Film;
-import ray.render.RenderSettings;
 import ray.render.Renderer;
 import ray.render.Sampler;
+import ray.settings.RenderSettings;
 
 /**
  * The engine's own stochastic parts under the t-tests of {@link StatTest} (Nori's way): each family holds

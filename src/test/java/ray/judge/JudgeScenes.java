@@ -15,8 +15,8 @@ import ray.light.PointLight;
 import ray.parse.Parser;
 import ray.parse.SceneFormatException;
 import ray.render.Image;
-import ray.render.RenderSettings;
 import ray.render.Renderer;
+import ray.settings.RenderSettings;
 
 /** Renders of scenes/material-blinnphong.txt (three Blinn-Phong spheres on a floor, hard shadows) at 120 x 90, with planted changes. */
 final class JudgeScenes {
