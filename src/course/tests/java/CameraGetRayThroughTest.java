@@ -3,8 +3,10 @@ import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.ExtendWith;
 
 /** The camera's frame is set by hand here, so these tests do not depend on your recalculate. */
+@ExtendWith(NamesTheMethod.class)
 @Order(4)
 @Tag("method:Camera.getRayThrough")
 @DisplayName("4. Camera.getRayThrough")

@@ -4,7 +4,9 @@ import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.ExtendWith;
 
+@ExtendWith(NamesTheMethod.class)
 @Order(3)
 @Tag("method:Camera.recalculate")
 @DisplayName("3. Camera.recalculate")

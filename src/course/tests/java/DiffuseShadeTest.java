@@ -3,8 +3,10 @@ import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.ExtendWith;
 
 /** The lights here are test lights with a fixed intensity and direction, not your PointLight. */
+@ExtendWith(NamesTheMethod.class)
 @Order(6)
 @Tag("method:Diffuse.shade")
 @DisplayName("6. Diffuse.shade")

@@ -3,8 +3,10 @@ import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.ExtendWith;
 
 /** scene.trace here is a test stand-in that returns a fixed colour and remembers the mirror ray. */
+@ExtendWith(NamesTheMethod.class)
 @Order(8)
 @Tag("method:GlazedMaterial.shade")
 @DisplayName("8. GlazedMaterial.shade")
@@ -34,8 +36,8 @@ class GlazedMaterialShadeTest {
         try {
             c = shade(glazed(null, 0.5), s, 0);
         } catch (NullPointerException e) {
-            throw new AssertionError(M + ": a Glazed without a base (base == null) must shade as if the base were black;"
-                    + " yours threw " + e, e);
+            throw new org.opentest4j.AssertionFailedError(M + ": a Glazed without a base (base == null) must shade as if the base"
+                    + " were black; yours threw " + e, e);
         }
         Expect.color(Expect.v(0.1, 0.2, 0.3), c, M, "no base, k_m 0.5, the mirror ray seeing (0.2, 0.4, 0.6)");
     }

@@ -3,8 +3,10 @@ import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.ExtendWith;
 
 /** The blockers here are test walls (planes z = const), not your Sphere or Triangle. */
+@ExtendWith(NamesTheMethod.class)
 @Order(5)
 @Tag("method:PointLight.getIntensity")
 @DisplayName("5. PointLight.getIntensity")

@@ -3,8 +3,10 @@ import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.ExtendWith;
 
 /** renderPixel here is a test stand-in that colours pixel (x, y) with (x, y, 0). */
+@ExtendWith(NamesTheMethod.class)
 @Order(11)
 @Tag("method:Scene.renderAll")
 @DisplayName("11. Scene.renderAll")

@@ -5,8 +5,10 @@ import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.ExtendWith;
 
 /** The camera and trace here are test stand-ins that remember where the samples went. */
+@ExtendWith(NamesTheMethod.class)
 @Order(10)
 @Tag("method:Scene.renderPixel")
 @DisplayName("10. Scene.renderPixel")

@@ -3,8 +3,10 @@ import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.ExtendWith;
 
 /** The surfaces here are test surfaces hit at a fixed t, the materials fixed colours. */
+@ExtendWith(NamesTheMethod.class)
 @Order(9)
 @Tag("method:Scene.trace")
 @DisplayName("9. Scene.trace")

@@ -3,7 +3,9 @@ import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.ExtendWith;
 
+@ExtendWith(NamesTheMethod.class)
 @Order(1)
 @Tag("method:Sphere.intersects")
 @DisplayName("1. Sphere.intersects")

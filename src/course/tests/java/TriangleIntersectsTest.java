@@ -3,7 +3,9 @@ import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.ExtendWith;
 
+@ExtendWith(NamesTheMethod.class)
 @Order(2)
 @Tag("method:Triangle.intersects")
 @DisplayName("2. Triangle.intersects")

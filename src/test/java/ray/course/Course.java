@@ -137,9 +137,14 @@ final class Course {
 
     /** Compiles every .java file under {@code sources} into {@code out} against vecmath and JUnit's API; javac's messages, or "". */
     static String compile(Path out, Path... sources) throws IOException {
+        return compileWith("", out, sources);
+    }
+
+    /** As {@link #compile}, with {@code classpath} (class folders) before the jars; sources may be single files. */
+    static String compileWith(String classpath, Path out, Path... sources) throws IOException {
         JavaCompiler javac = ToolProvider.getSystemJavaCompiler();
         List<String> args = new ArrayList<>(List.of("--release", "17", "-nowarn", "-encoding", "UTF-8", "-d", out.toString(),
-                "-classpath", jars()));
+                "-classpath", (classpath.isEmpty() ? "" : classpath + java.io.File.pathSeparator) + jars()));
         for (Path s : sources) {
             try (Stream<Path> files = Files.walk(s)) {
                 files.filter(p -> p.toString().endsWith(".java")).map(Path::toString).sorted().forEach(args::add);

@@ -84,6 +84,18 @@ class StudentTestsTest {
         assertEquals(64 + 160, side.getRGB(2 * 204 + 100, 70) & 0xFF, "yours darker by 40: blue, 64 + 4 x 40");
     }
 
+    /** Test class to method, from the kit's methods.tsv (SphereIntersectsTest to Sphere.intersects ...). */
+    static Map<String, String> methodOf() throws IOException {
+        Map<String, String> methodOf = new TreeMap<>();
+        for (String row : Files.readAllLines(Course.KIT.resolve("methods.tsv"))) {
+            if (!row.startsWith("#")) {
+                String[] f = row.split("\t");
+                methodOf.put(f[5], f[1]);
+            }
+        }
+        return methodOf;
+    }
+
     /**
      * The handout as generated: it compiles; with its stubs every test of each method's class fails with a
      * message naming that method, and the golden-image tests name the first method that returns nothing.
@@ -95,13 +107,7 @@ class StudentTestsTest {
         assertEquals("", errors, "the stubbed handout compiles");
         Map<String, String> props = quickScenes(dir.resolve("scenes"), dir.resolve("refs"));
         List<Course.Outcome> outcomes = Course.runTests(Course.loader(classes), classes, props);
-        Map<String, String> methodOf = new TreeMap<>();
-        for (String row : Files.readAllLines(Course.KIT.resolve("methods.tsv"))) {
-            if (!row.startsWith("#")) {
-                String[] f = row.split("\t");
-                methodOf.put(f[5], f[1]);
-            }
-        }
+        Map<String, String> methodOf = methodOf();
         assertEquals(11, methodOf.size());
         List<String> wrong = new ArrayList<>();
         for (Course.Outcome o : outcomes) {
