@@ -112,12 +112,16 @@ public final class Grader {
             notes.add("the hand-in has no .java files: graded the handout as it is");
         }
         List<TestSet.Item> items = set.items();
+        // the folders as the child sees them: mounted at fixed places in the sandbox, where they are without it
+        boolean boxed = sandbox.kind() == Sandbox.Kind.BWRAP;
+        String inDir = boxed ? Sandbox.IN : in.toString(), outDir = boxed ? Sandbox.OUT : out.toString();
+        String libDir = boxed ? Sandbox.LIB : shared.toString();
         StringBuilder plan = new StringBuilder();
-        plan.append("src\t").append(Sandbox.IN).append("/src\n");
-        plan.append("framework\t").append(Sandbox.IN).append("/framework\n");
-        plan.append("checks\t").append(Sandbox.IN).append("/checks\n");
-        plan.append("out\t").append(Sandbox.OUT).append('\n');
-        plan.append("classpath\t").append(Sandbox.LIB).append("/vecmath.jar\n");
+        plan.append("src\t").append(inDir).append("/src\n");
+        plan.append("framework\t").append(inDir).append("/framework\n");
+        plan.append("checks\t").append(inDir).append("/checks\n");
+        plan.append("out\t").append(outDir).append('\n');
+        plan.append("classpath\t").append(libDir).append("/vecmath.jar\n");
         plan.append("submitted\t").append(String.join(",", submitted)).append('\n');
         plan.append("heap-mb\t").append(set.limits().heapMb()).append('\n');
         if (set.render() != null) {
@@ -128,8 +132,8 @@ public final class Grader {
             if (i.kind() == TestSet.Kind.CHECK) {
                 plan.append("check\t").append(i.target());
             } else {
-                plan.append("scene\t").append(Sandbox.LIB).append("/scenes/").append(i.target()).append('\t')
-                        .append(Sandbox.OUT).append("/images/").append(TestSet.pngName(i.target()));
+                plan.append("scene\t").append(libDir).append("/scenes/").append(i.target()).append('\t')
+                        .append(outDir).append("/images/").append(TestSet.pngName(i.target()));
             }
             plan.append('\t').append(timeoutMs(i)).append('\n');
         }
@@ -184,7 +188,7 @@ public final class Grader {
         Map<String, String> failedMethods = new LinkedHashMap<>();
         double renderSeconds = 0;
         for (TestSet.Item i : items) {
-            String output = readCapped(out.resolve(i.id() + ".out"), 16 * 1024);
+            String output = readCapped(out.resolve(i.id() + ".out"), 20 * 1024);   // the harness keeps 16 KB and a note
             String[] end = ends.get(i.id());
             TestResult r;
             if (end == null) {

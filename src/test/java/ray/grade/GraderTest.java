@@ -106,6 +106,7 @@ class GraderTest {
         lean = new Grader(TestSet.load(leanTests), box, Judge.standard(), work);
 
         Map<String, Path> subs = new LinkedHashMap<>();
+        Map<String, Future<SubmissionResult>> futures = new LinkedHashMap<>();
         Path subsDir = Files.createDirectories(tmp.resolve("submissions"));
         subs.put("stub", copyTree(framework, subsDir.resolve("stub")));
         for (String[] bug : BUGS) {
@@ -143,8 +144,31 @@ class GraderTest {
         Files.writeString(hostile.resolve("Probe.java"), PROBE);
         subs.put("hostile", hostile);
 
+        // one hand-in misbehaving four ways, each in its own method: endless recursion, a file that does not
+        // compile, running out of heap, printing megabytes
+        Path bad = solved(subsDir.resolve("misbehaving"));
+        edit(bad.resolve("Sphere.java"), "Vector3d oc = new Vector3d();",
+                "if (ray != null) {\n            return intersects(ray, record, scene);\n        }\n        Vector3d oc = new Vector3d();");
+        edit(bad.resolve("Triangle.java"), "public boolean intersects(", "int broken = ;\n\n    public boolean intersects(");
+        edit(bad.resolve("Diffuse.java"), "Vector3d color = new Vector3d();",
+                "if (scene != null) {\n            java.util.List<long[]> hog = new java.util.ArrayList<>();\n"
+                + "            while (hog != null) {\n                hog.add(new long[1 << 24]);\n            }\n        }\n"
+                + "        Vector3d color = new Vector3d();");
+        edit(bad.resolve("BlinnPhong.java"), "Vector3d color = new Vector3d();",
+                "for (int i = 0; i < 100000; i++) {\n            System.out.println(\"spam \" + i + \" spam spam spam spam spam spam spam spam\");\n"
+                + "        }\n        Vector3d color = new Vector3d();");
+        subs.put("misbehaving", bad);
+
         ExecutorService pool = Executors.newFixedThreadPool(2);
-        Map<String, Future<SubmissionResult>> futures = new LinkedHashMap<>();
+        // the fallback: no isolation, the same limits, and every report says so
+        Grader unsandboxed = new Grader(TestSet.load(leanTests), Sandbox.choose("none"), Judge.standard(), work);
+        futures.put("exit-unsandboxed", pool.submit(() -> {
+            try {
+                return unsandboxed.grade(Submission.read(subs.get("exit")), tmp.resolve("reports/exit-unsandboxed"));
+            } finally {
+                unsandboxed.close();
+            }
+        }));
         futures.put("solution", pool.submit(() -> full.grade(Submission.read(SOLUTION), tmp.resolve("reports/solution"))));
         for (Map.Entry<String, Path> e : subs.entrySet()) {
             futures.put(e.getKey(), pool.submit(() -> lean.grade(Submission.read(e.getValue()), tmp.resolve("reports/" + e.getKey()))));
@@ -309,6 +333,45 @@ class GraderTest {
         assertTrue(json.contains("Camera.getRayThrough: a camera at (1, 2, 3)"), json);
         assertTrue(Files.isRegularFile(root.resolve("results/report/index.html")));
         Files.delete(source.resolve("raytracer"));   // the link, not the installation
+    }
+
+    @Test
+    void misbehaviourCostsOnlyItsMethodWithAMessage() {
+        SubmissionResult r = results.get("misbehaving");
+        for (TestResult t : r.tests()) {
+            if (t.kind() != TestSet.Kind.CHECK) {
+                continue;
+            }
+            String method = t.name().substring(0, t.name().indexOf(':'));
+            switch (method) {
+                case "Sphere.intersects" -> assertTrue(!t.passed() && t.message().contains("endless recursion (StackOverflowError)")
+                        && t.message().startsWith("Sphere.intersects"), t.message());
+                case "Triangle.intersects" -> assertTrue(!t.passed() && t.message().startsWith("Triangle.intersects"), t.message());
+                case "Diffuse.shade" -> assertTrue(!t.passed() && t.message().contains("ran out of memory")
+                        && t.message().contains("Diffuse.shade"), t.message());
+                case "BlinnPhong.shade" -> {
+                    assertTrue(t.passed(), t.message());
+                    assertTrue(t.output().length() < 20_000 && t.output().contains("more bytes of output left out"), t.output());
+                }
+                default -> assertTrue(t.passed(), () -> t.name() + ": " + t.message());
+            }
+        }
+        assertTrue(r.notes().stream().anyMatch(n -> n.startsWith("Triangle.java did not compile, so the handout's Triangle.java was graded")
+                && n.contains("Triangle.java:")), r.notes().toString());
+    }
+
+    @Test
+    void theFallbackGradesAlikeAndSaysSo() {
+        SubmissionResult sandboxed = results.get("exit"), plain = results.get("exit-unsandboxed");
+        assertEquals(sandboxed.score(), plain.score(), () -> failures(plain));
+        assertTrue(plain.sandbox().contains("no sandbox"), plain.sandbox());
+        assertTrue(Reports.summary(plain).contains("no sandbox") && Reports.studentHtml(plain).contains("no sandbox"));
+    }
+
+    static void edit(Path file, String from, String to) throws IOException {
+        String s = Files.readString(file);
+        assertTrue(s.contains(from), file + " no longer holds " + from);
+        Files.writeString(file, s.replace(from, to));
     }
 
     static String failures(SubmissionResult r) {

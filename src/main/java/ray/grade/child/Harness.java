@@ -252,8 +252,8 @@ public final class Harness {
         Files.write(Path.of(conf.get("out"), id + ".out"), capture.bytes());
         if (t.isAlive()) {
             running = null;
-            record("END " + id + " TIMEOUT " + nanos + " " + escape("did not finish within " + (timeoutMs / 1000.0)
-                    + " s" + where(t.getStackTrace())));
+            record("END " + id + " TIMEOUT " + nanos + " " + escape(blame("did not finish within " + (timeoutMs / 1000.0)
+                    + " s (an endless loop?)", t.getStackTrace())));
             Runtime.getRuntime().halt(124);
         }
         running = null;
@@ -376,7 +376,18 @@ public final class Harness {
         } else {
             what = e.getClass().getName() + (e.getMessage() == null ? "" : ": " + e.getMessage());
         }
-        return what + where(e.getStackTrace());
+        return blame(what, e.getStackTrace());
+    }
+
+    /** "Class.method: what (File.java:line)" naming the submission's frame, or just "what" when there is none. */
+    private String blame(String what, StackTraceElement[] trace) {
+        String at = where(trace);
+        if (at.isEmpty()) {
+            return what;
+        }
+        int paren = at.indexOf(" (");
+        String method = (paren < 0 ? at : at.substring(0, paren)).substring(" in ".length());
+        return method + ": " + what + (paren < 0 ? "" : at.substring(paren));
     }
 
     /** " in Class.method (File.java:line)" for the first frame of the submission's code, or "". */
