@@ -133,7 +133,7 @@ public final class Grader {
                 plan.append("check\t").append(i.target());
             } else {
                 plan.append("scene\t").append(libDir).append("/scenes/").append(i.target()).append('\t')
-                        .append(outDir).append("/images/").append(TestSet.pngName(i.target()));
+                        .append(outDir).append("/images/").append(TestSet.pngName(i.target())).append('\t').append(i.renders());
             }
             plan.append('\t').append(timeoutMs(i)).append('\n');
         }
@@ -148,7 +148,7 @@ public final class Grader {
         for (int starts = 0; start < items.size() && starts < MAX_STARTS; starts++) {
             double budget = (start == 0 ? COMPILE_SECONDS : 0) + 15;
             for (int i = start; i < items.size(); i++) {
-                budget += timeoutMs(items.get(i)) / 1000.0;
+                budget += budgetMs(items.get(i)) / 1000.0;
             }
             double left = (deadline - System.nanoTime()) / 1e9;
             if (left <= 1) {
@@ -273,7 +273,23 @@ public final class Grader {
         }
         String yoursName = base + "-yours.png";
         ImageIO.write(yours, "png", reportDir.resolve(yoursName).toFile());
-        Judge.Verdict v = judge.judge(ref, yours, i.stochastic());
+        Judge.Verdict v;
+        if (i.stochastic()) {
+            List<BufferedImage> refs = new ArrayList<>(), cands = new ArrayList<>();
+            for (Path p : TestSet.referenceRenders(set.references(), i.target())) {
+                refs.add(ImageIO.read(p.toFile()));
+            }
+            for (int k = 1; k <= i.renders(); k++) {
+                BufferedImage c = k == 1 ? yours : readCandidate(out.resolve("images").resolve(TestSet.renderName(i.target(), k)),
+                        ref.getWidth(), ref.getHeight());
+                if (c != null) {
+                    cands.add(c);
+                }
+            }
+            v = cands.size() < 2 ? judge.judge(ref, yours, true) : judge.judge(refs, cands);
+        } else {
+            v = judge.judge(ref, yours, false);
+        }
         String diffName = null;
         if (v.heatMap() != null) {
             diffName = base + "-difference.png";
@@ -322,8 +338,13 @@ public final class Grader {
         }
     }
 
+    /** An item's time limit (a stochastic scene's is per render: {@link #budgetMs} counts them all). */
     private long timeoutMs(TestSet.Item i) {
         return (long) (1000 * (i.kind() == TestSet.Kind.CHECK ? set.limits().checkSeconds() : set.limits().sceneSeconds()));
+    }
+
+    private long budgetMs(TestSet.Item i) {
+        return timeoutMs(i) * i.renders();
     }
 
     private static String deathMessage(Run run, boolean exited, TestSet.Limits limits) {

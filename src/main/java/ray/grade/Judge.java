@@ -24,6 +24,12 @@ public interface Judge {
     /** {@code stochastic}: the scene is rendered with random samples; judge it statistically. */
     Verdict judge(BufferedImage reference, BufferedImage candidate, boolean stochastic);
 
+    /**
+     * A stochastic scene: independent renders of the reference and of the candidate, compared by the means
+     * and variances they show (the first of each is what the report pictures).
+     */
+    Verdict judge(java.util.List<BufferedImage> references, java.util.List<BufferedImage> candidates);
+
     static Judge standard() {
         return new PixelJudge();
     }

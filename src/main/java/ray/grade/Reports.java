@@ -146,7 +146,7 @@ public final class Reports {
                 double got = r.tests().stream().filter(x -> x.group().equals(t.group())).mapToDouble(TestResult::score).sum();
                 double max = r.tests().stream().filter(x -> x.group().equals(t.group())).mapToDouble(TestResult::maxScore).sum();
                 b.append("<h2>").append(h(group)).append(" <small>").append(num(got)).append(" / ").append(num(max)).append("</small></h2>\n");
-                b.append("<table><tr><th>verdict</th><th>points</th><th>test</th><th>message</th></tr>\n");
+                b.append("<table class=tests><tr><th>verdict</th><th>points</th><th>test</th><th>message</th></tr>\n");
             }
             b.append("<tr class=").append(t.status()).append("><td>").append(verdict(t)).append("</td><td>").append(num(t.score()))
                     .append(" / ").append(num(t.maxScore())).append("</td><td>").append(h(t.name())).append("</td><td>")
@@ -302,7 +302,8 @@ public final class Reports {
         b.append("<!DOCTYPE html>\n<html lang=en><head><meta charset=utf-8><title>").append(h(title)).append("</title>\n<style>\n")
                 .append("body{font:14px/1.4 system-ui,sans-serif;margin:2em;max-width:1200px;color:#222}\n")
                 .append("table{border-collapse:collapse;margin:.5em 0}td,th{border-bottom:1px solid #ddd;padding:4px 8px;text-align:left;"
-                        + "vertical-align:top}\n")
+                        + "vertical-align:top}td:first-child,td:nth-child(2){white-space:nowrap}table.tests{width:100%}"
+                        + "table.tests td:nth-child(3){width:32%}\n")
                 .append("tr.passed td:first-child{color:#1a7f37}tr.failed td:first-child,tr.crashed td:first-child,"
                         + "tr.timeout td:first-child{color:#c62828}tr.partial td:first-child{color:#b26a00}\n")
                 .append(".imgs{display:flex;gap:12px;align-items:flex-start}figure{margin:0}img{image-rendering:pixelated;max-width:320px;"

@@ -32,7 +32,7 @@ public final class TestSet {
 
     /** One graded item: a check method or a scene. */
     public record Item(String id, Kind kind, String group, double points, String target, String title,
-                       boolean stochastic, List<String> uses) {
+                       boolean stochastic, List<String> uses, int renders) {
     }
 
     public enum Kind { CHECK, SCENE }
@@ -129,15 +129,26 @@ public final class TestSet {
                     }
                     double points = number(w[1], where);
                     boolean stochastic = false;
+                    int renders = 1;
                     List<String> uses = new ArrayList<>();
                     int t = 3;
-                    while (t < w.length && (w[t].equals("stochastic") || w[t].startsWith("uses="))) {
+                    while (t < w.length && (w[t].equals("stochastic") || w[t].startsWith("uses=") || w[t].startsWith("renders="))) {
                         if (w[t].equals("stochastic")) {
                             stochastic = true;
+                            renders = Math.max(renders, 4);
+                        } else if (w[t].startsWith("renders=")) {
+                            double r = number(w[t].substring(8), where);
+                            if (r < 2 || r > 64 || r != Math.rint(r)) {
+                                throw new IOException(where + "renders= takes a whole number from 2 to 64");
+                            }
+                            renders = (int) r;
                         } else {
                             uses.addAll(List.of(w[t].substring(5).split(",")));
                         }
                         t++;
+                    }
+                    if (renders > 1 && !stochastic) {
+                        throw new IOException(where + "renders= goes with stochastic");
                     }
                     Kind kind = w[0].equals("check") ? Kind.CHECK : Kind.SCENE;
                     if (kind == Kind.CHECK && !w[2].matches("[A-Za-z_$][\\w$]*\\.[A-Za-z_$][\\w$]*")) {
@@ -145,7 +156,7 @@ public final class TestSet {
                     }
                     String title = t < w.length ? rest(w, t) : w[2];
                     String id = (kind == Kind.CHECK ? "c" : "s") + (items.size() + 1);
-                    items.add(new Item(id, kind, group, points, w[2], title, stochastic, uses));
+                    items.add(new Item(id, kind, group, points, w[2], title, stochastic, uses, renders));
                 }
                 default -> throw new IOException(where + "unknown line \"" + w[0] + "\" (expected framework, checks, scenes, "
                         + "references, render, method, limit, group, check or scene)");
@@ -171,12 +182,31 @@ public final class TestSet {
                 if (!Files.isRegularFile(folders.get("references").resolve(pngName(i.target())))) {
                     throw new IOException(rubric + ": no reference image " + pngName(i.target()) + " in " + folders.get("references"));
                 }
+                if (i.stochastic() && referenceRenders(folders.get("references"), i.target()).size() < 2) {
+                    throw new IOException(rubric + ": the stochastic scene " + i.target() + " needs independent reference renders "
+                            + pngName(i.target()) + ", " + renderName(i.target(), 2) + ", ... (at least two) in " + folders.get("references"));
+                }
             }
         }
         Limits l = new Limits(limits.get("check-seconds"), limits.get("scene-seconds"), limits.get("total-seconds"),
                 limits.get("heap-mb").intValue(), limits.get("output-kb").intValue());
         return new TestSet(dir, folders.get("framework"), folders.get("checks"), folders.get("scenes"),
                 folders.get("references"), render, methods, groups, items, l);
+    }
+
+    /** Render {@code k} (from 1) of a stochastic scene: {@code a.png}, {@code a-2.png}, {@code a-3.png} ... */
+    public static String renderName(String scene, int k) {
+        String png = pngName(scene);
+        return k == 1 ? png : png.substring(0, png.length() - 4) + "-" + k + ".png";
+    }
+
+    /** A stochastic scene's reference renders: NAME.png, NAME-2.png, ... as long as they go on. */
+    public static List<Path> referenceRenders(Path references, String scene) {
+        List<Path> out = new ArrayList<>();
+        for (int k = 1; k <= 1000 && Files.isRegularFile(references.resolve(renderName(scene, k))); k++) {
+            out.add(references.resolve(renderName(scene, k)));
+        }
+        return out;
     }
 
     /** {@code a.txt} -> {@code a.png}. */

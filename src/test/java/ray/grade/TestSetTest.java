@@ -23,6 +23,7 @@ class TestSetTest {
         }
         Files.writeString(dir.resolve("scenes/a.txt"), "Width 1\n");
         Files.writeString(dir.resolve("refs/a.png"), "");
+        Files.writeString(dir.resolve("refs/a-2.png"), "");   // a second independent render, for the stochastic scene
         Files.writeString(dir.resolve("rubric.txt"), "framework fw\nchecks checks\nscenes scenes\nreferences refs\n" + body);
         return dir;
     }
@@ -36,7 +37,7 @@ class TestSetTest {
                 group One
                 check 2.5 C.x  A.m: does x
                 group Two
-                scene 3 a.txt stochastic uses=A.m,B.n  The scene a
+                scene 3 a.txt stochastic renders=6 uses=A.m,B.n  The scene a
                 """));
         assertEquals(List.of("One", "Two"), t.groups());
         assertEquals(5.5, t.maxScore());
@@ -47,6 +48,8 @@ class TestSetTest {
         assertEquals(TestSet.Kind.SCENE, s.kind());
         assertTrue(s.stochastic());
         assertEquals(List.of("A.m", "B.n"), s.uses());
+        assertEquals(6, s.renders());
+        assertEquals(List.of(dir.resolve("refs/a.png"), dir.resolve("refs/a-2.png")), TestSet.referenceRenders(t.references(), "a.txt"));
         assertEquals("The scene a", s.title());
         assertEquals("A.m: does x", t.items().get(0).title());
     }
@@ -62,12 +65,22 @@ class TestSetTest {
         assertMistake("group G\nscene 1 a.txt T\n", "scenes need a \"render CLASS.METHOD\" line");
         assertMistake("group G\ngroup G\n", "rubric.txt:6: group \"G\" appears twice");
         assertMistake("", "no check or scene lines");
+        assertMistake("render R.r\ngroup G\nscene 1 a.txt renders=3 T\n", "rubric.txt:7: renders= goes with stochastic");
+        assertMistake("render R.r\ngroup G\nscene 1 a.txt stochastic renders=1 T\n", "renders= takes a whole number from 2 to 64");
     }
 
     void assertMistake(String body, String expected) throws IOException {
         Path d = rubric(body);
         IOException e = assertThrows(IOException.class, () -> TestSet.load(d));
         assertTrue(e.getMessage().contains(expected), e.getMessage());
+    }
+
+    @Test
+    void aStochasticSceneNeedsSeveralReferenceRenders() throws IOException {
+        Path d = rubric("render R.r\ngroup G\nscene 1 a.txt stochastic T\n");
+        Files.delete(d.resolve("refs/a-2.png"));
+        IOException e = assertThrows(IOException.class, () -> TestSet.load(d));
+        assertTrue(e.getMessage().contains("needs independent reference renders a.png, a-2.png"), e.getMessage());
     }
 
     @Test

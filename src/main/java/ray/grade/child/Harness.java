@@ -47,7 +47,7 @@ import javax.tools.ToolProvider;
  *
  * <p>Plan file, tab-separated: {@code src DIR}, {@code checks DIR}, {@code out DIR}, {@code classpath PATH},
  * {@code render CLASS.METHOD}, {@code heap-mb N}, {@code item ID check CLASS.METHOD TIMEOUT_MS},
- * {@code item ID scene SCENE_PATH PNG_PATH TIMEOUT_MS}.
+ * {@code item ID scene SCENE_PATH PNG_PATH RENDERS TIMEOUT_MS} (the limit is per render).
  */
 public final class Harness {
 
@@ -229,7 +229,7 @@ public final class Harness {
 
     private void runItem(String[] item) throws Exception {
         String id = item[1];
-        long timeoutMs = Long.parseLong(item[item.length - 1]);
+        long timeoutMs = Long.parseLong(item[item.length - 1]) * (item[2].equals("scene") ? Integer.parseInt(item[5]) : 1);
         record("BEGIN " + id);
         running = id;
         capture.reset();
@@ -237,7 +237,7 @@ public final class Harness {
         long t0 = System.nanoTime();
         Thread t = new Thread(null, () -> {
             try {
-                verdict[1] = item[2].equals("check") ? check(item[3]) : scene(item[3], item[4]);
+                verdict[1] = item[2].equals("check") ? check(item[3]) : scenes(item[3], item[4], Integer.parseInt(item[5]));
                 verdict[0] = verdict[1] == null ? "PASS" : "FAIL";
             } catch (Throwable e) {
                 verdict[0] = "FAIL";
@@ -283,6 +283,17 @@ public final class Harness {
                 return c.getMessage();
             }
             return describe(c);
+        }
+        return null;
+    }
+
+    /** Renders a scene {@code renders} times (a stochastic scene: independent renders png, png-2, ...). */
+    private String scenes(String scenePath, String png, int renders) throws Exception {
+        for (int k = 1; k <= renders; k++) {
+            String problem = scene(scenePath, k == 1 ? png : png.substring(0, png.length() - 4) + "-" + k + ".png");
+            if (problem != null) {
+                return problem;
+            }
         }
         return null;
     }
