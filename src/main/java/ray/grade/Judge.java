@@ -5,7 +5,8 @@ import java.util.Map;
 
 /**
  * How the grader judges a rendered image against its reference (in the grader's JVM, never in student
- * code). {@link #standard()} is the project's tolerance policy (docs/grading.md).
+ * code): the seam between the grader and {@code ray.judge}. {@link #standard()} is the project's
+ * tolerance policy (docs/grading.md); a course could plug in another.
  */
 public interface Judge {
 
@@ -30,7 +31,8 @@ public interface Judge {
      */
     Verdict judge(java.util.List<BufferedImage> references, java.util.List<BufferedImage> candidates);
 
+    /** The project's tolerance policy: {@code ray.judge} (docs/grading.md, "How images are judged"). */
     static Judge standard() {
-        return new PixelJudge();
+        return new RayJudge();
     }
 }

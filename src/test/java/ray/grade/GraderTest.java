@@ -69,6 +69,27 @@ class GraderTest {
     volatile boolean connected;
     Grader full, lean;
     Sandbox box;
+    ExecutorService pool;
+
+    Future<SubmissionResult> pool(String name, Grader g, Path submission) {
+        return pool.submit(() -> g.grade(Submission.read(submission), tmp.resolve("reports/" + name)));
+    }
+
+    /** {@code img} with independent zero-mean noise of -3..3 steps per channel (clamped as a PNG is). */
+    static java.awt.image.BufferedImage noise(java.awt.image.BufferedImage img, java.util.Random r) {
+        java.awt.image.BufferedImage out = new java.awt.image.BufferedImage(img.getWidth(), img.getHeight(),
+                java.awt.image.BufferedImage.TYPE_INT_RGB);
+        for (int y = 0; y < img.getHeight(); y++) {
+            for (int x = 0; x < img.getWidth(); x++) {
+                int c = img.getRGB(x, y), v = 0;
+                for (int shift = 16; shift >= 0; shift -= 8) {
+                    v = v << 8 | Math.max(0, Math.min(255, (c >> shift & 255) + r.nextInt(7) - 3));
+                }
+                out.setRGB(x, y, v);
+            }
+        }
+        return out;
+    }
     final Map<String, SubmissionResult> results = new LinkedHashMap<>();
 
     @BeforeAll
@@ -107,6 +128,7 @@ class GraderTest {
 
         Map<String, Path> subs = new LinkedHashMap<>();
         Map<String, Future<SubmissionResult>> futures = new LinkedHashMap<>();
+        pool = Executors.newFixedThreadPool(2);
         Path subsDir = Files.createDirectories(tmp.resolve("submissions"));
         subs.put("stub", copyTree(framework, subsDir.resolve("stub")));
         for (String[] bug : BUGS) {
@@ -159,7 +181,30 @@ class GraderTest {
                 + "        }\n        Vector3d color = new Vector3d();");
         subs.put("misbehaving", bad);
 
-        ExecutorService pool = Executors.newFixedThreadPool(2);
+        // a stochastic scene: four independent reference renders with zero-mean noise of +-3 steps, and two
+        // noisy hand-ins, one unbiased, one 2 steps too bright (each noise alone hides the bias pixel by pixel)
+        Path noisy = Files.createDirectories(kit.resolve("noisy"));
+        Path noisyRefs = Files.createDirectories(noisy.resolve("refs"));
+        java.awt.image.BufferedImage clean = javax.imageio.ImageIO.read(kit.resolve("handout/reference-images/material-diffuse.png").toFile());
+        java.util.Random random = new java.util.Random(465);
+        for (int k = 1; k <= 4; k++) {
+            javax.imageio.ImageIO.write(noise(clean, random), "png", noisyRefs.resolve(TestSet.renderName("material-diffuse.txt", k)).toFile());
+        }
+        Files.writeString(noisy.resolve("rubric.txt"), "framework ../handout/src/main/java\nscenes ../handout/scenes\nreferences refs\n"
+                + "checks ../grading/checks\nrender GraderRender.render\ngroup Noise\n"
+                + "scene 4 material-diffuse.txt stochastic renders=4 uses=Scene.renderPixel  A noisy render\n");
+        Grader stochastic = new Grader(TestSet.load(noisy), box, Judge.standard(), work);
+        for (String[] n : new String[][] {{"noisy-unbiased", "0"}, {"noisy-biased", "2"}}) {
+            Path d = solved(subsDir.resolve(n[0]));
+            edit(d.resolve("Scene.java"), "sum.scale(1.0 / (n * n));", "sum.scale(1.0 / (n * n));\n"
+                    + "        java.util.Random r = NOISE;\n"
+                    + "        sum.x += (r.nextInt(7) - 3 + " + n[1] + ") / 255.0;\n        sum.y += (r.nextInt(7) - 3 + " + n[1] + ") / 255.0;\n"
+                    + "        sum.z += (r.nextInt(7) - 3 + " + n[1] + ") / 255.0;");
+            // seeded, so the test's outcome does not depend on luck (each render continues the sequence: independent)
+            edit(d.resolve("Scene.java"), "public class Scene {", "public class Scene {\n    static final java.util.Random NOISE = new java.util.Random(7);");
+            futures.put(n[0], pool(n[0], stochastic, d));
+        }
+
         // the fallback: no isolation, the same limits, and every report says so
         Grader unsandboxed = new Grader(TestSet.load(leanTests), Sandbox.choose("none"), Judge.standard(), work);
         futures.put("exit-unsandboxed", pool.submit(() -> {
@@ -358,6 +403,14 @@ class GraderTest {
         }
         assertTrue(r.notes().stream().anyMatch(n -> n.startsWith("Triangle.java did not compile, so the handout's Triangle.java was graded")
                 && n.contains("Triangle.java:")), r.notes().toString());
+    }
+
+    @Test
+    void aStochasticSceneIsJudgedByItsMeans() {
+        SubmissionResult fair = results.get("noisy-unbiased"), biased = results.get("noisy-biased");
+        assertEquals(fair.maxScore(), fair.score(), () -> failures(fair));
+        assertTrue(biased.score() < biased.maxScore(), () -> failures(biased));
+        assertTrue(biased.tests().get(0).message().contains("Scene.renderPixel"), biased.tests().get(0).message());
     }
 
     @Test
