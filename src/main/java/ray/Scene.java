@@ -205,16 +205,24 @@ public class Scene {
         return accelerator().anyHit(ray, ctx);
     }
 
-    /** True when something lies between {@code record}'s point and the light sample's position. */
+    /** True when something lies between {@code record}'s point and the light sample (its position, or infinitely far). */
     public boolean occluded(IntersectionRecord record, LightSample sample) {
         return occluded(record, sample, TraceContext.current(this));
     }
 
-    /** Allocation-free shadow query for a light sample, on {@code ctx}'s shadow ray ({@link RayKind#SHADOW}). */
+    /**
+     * Allocation-free shadow query for a light sample, on {@code ctx}'s shadow ray ({@link RayKind#SHADOW}):
+     * to the sample's position, or to infinity along its direction for a light infinitely far away.
+     */
     public boolean occluded(IntersectionRecord record, LightSample sample, TraceContext ctx) {
         Ray s = ctx.shadowRay;
-        Vector3d p = sample.position;
-        record.spawnRayTo(p.x, p.y, p.z, s);
+        if (sample.distance == Double.POSITIVE_INFINITY) {
+            Vector3d d = sample.direction;
+            record.spawnRay(d.x, d.y, d.z, s);
+        } else {
+            Vector3d p = sample.position;
+            record.spawnRayTo(p.x, p.y, p.z, s);
+        }
         ctx.stats.count(RayKind.SHADOW);
         return accelerator().anyHit(s, ctx);
     }

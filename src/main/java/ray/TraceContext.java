@@ -17,10 +17,13 @@ public final class TraceContext {
     private Vector3d[] colors = new Vector3d[0];
 
     public final Ray shadowRay = new Ray();
-    public final LightSample lightSample = new LightSample();
-    public final RayStats stats = new RayStats();
     /** The pixel sample being traced: light and effect code draws its sampler dimensions here (no allocation). */
     public final PixelSample sample = new PixelSample();
+    /** The light sample materials fill, drawing its random choices from {@link #sample}. */
+    public final LightSample lightSample = new LightSample(sample);
+    /** Scratch for a material's reflectance at the hit being shaded (a texture's value), read within its light loop. */
+    public final Vector3d reflectance = new Vector3d();
+    public final RayStats stats = new RayStats();
     /**
      * The scene accelerator's own per-thread scratch (for the BVH its {@code RayQuery}: traversal stack,
      * per-ray set-up); made and used by the accelerator only.

@@ -3,7 +3,6 @@ package ray.light;
 import javax.vecmath.Vector3d;
 import ray.IntersectionRecord;
 import ray.Scene;
-import ray.TraceContext;
 import ray.PixelSample;
 
 /**
@@ -26,7 +25,7 @@ import ray.PixelSample;
  * int samples 4                  # n: n x n samples per shading point, 1 to 64 (default 4)
  * </pre>
  */
-public class AreaLight extends Light {
+public class AreaLight extends SampledLight {
 
     /** Largest n: n^2 = 4,096 shadow rays per shading point already takes minutes on a small image. */
     public static final int MAX_SAMPLES = 64;
@@ -58,24 +57,12 @@ public class AreaLight extends Light {
     }
 
     @Override
-    public Vector3d getIntensity(IntersectionRecord record, Scene scene) {
-        LightSample s = new LightSample();
-        Vector3d result = new Vector3d();
-        for (int k = 0, count = sampleCount(); k < count; k++) {
-            if (sample(record, scene, k, s) && !scene.occluded(record, s)) {
-                result.add(s.intensity);
-            }
-        }
-        return result;
-    }
-
-    @Override
     public boolean sample(IntersectionRecord record, Scene scene, int index, LightSample out) {
         int n = samples;
         Vector3d p = record.location;
         // the point in cell (i, j): offsets (a, b) in [0, 1)^2 within the cell, the next 2D dimensions of
         // this pixel sample (the grid sampler gives the cell's centre, jittered and sobol a point in it)
-        PixelSample ps = TraceContext.current(scene).sample;
+        PixelSample ps = out.pixel;
         ps.next2D();
         double s = ((index % n) + ps.u) / n - 0.5, t = ((index / n) + ps.v) / n - 0.5;
         double lx = position.x + s * edge1.x + t * edge2.x;

@@ -14,7 +14,7 @@ import ray.Scene;
  * Vector3d intensity [20 20 20]  # default [1 1 1]
  * </pre>
  */
-public class PointLight extends Light {
+public class PointLight extends SampledLight {
 
     public Vector3d position = new Vector3d();
     public Vector3d intensity = new Vector3d(1, 1, 1);
@@ -24,16 +24,6 @@ public class PointLight extends Light {
         if (!finite(position) || !finite(intensity)) {
             throw new IllegalArgumentException("point light position and intensity must be finite numbers");
         }
-    }
-
-    @Override
-    public Vector3d getIntensity(IntersectionRecord record, Scene scene) {
-        LightSample s = new LightSample();
-        Vector3d result = new Vector3d();
-        if (sample(record, scene, 0, s) && !scene.occluded(record, s)) {
-            result.set(s.intensity);
-        }
-        return result;
     }
 
     @Override

@@ -71,18 +71,6 @@ public class SpotLight extends PointLight {
         return true;
     }
 
-    /** For the render plan (declared here because {@link #sample} is): dark when I = 0. */
-    @Override
-    public boolean isDark() {
-        return super.isDark();
-    }
-
-    /** For the render plan: one shadow ray per lit point, none outside the cone. */
-    @Override
-    public int shadowRaysPerPoint() {
-        return 1;
-    }
-
     @Override
     public String toString() {
         return "SpotLight[position " + position + ", direction " + direction + ", intensity " + intensity

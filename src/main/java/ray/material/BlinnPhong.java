@@ -32,7 +32,7 @@ public class BlinnPhong extends Diffuse {
     }
 
     @Override
-    double specular(Ray ray, Vector3d n, Vector3d l) {
+    protected double specular(Ray ray, Vector3d n, Vector3d l) {
         Vector3d d = ray.direction;
         double dl = Math.sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
         if (!(dl > 0)) {
@@ -49,7 +49,7 @@ public class BlinnPhong extends Diffuse {
     }
 
     @Override
-    Vector3d specularColorOrNull() {
+    protected Vector3d specularColorOrNull() {
         return java.util.Objects.requireNonNull(specularColor, "specularColor");   // a highlight, always
     }
 

@@ -60,10 +60,16 @@ public class DielectricMaterial extends Material {
         return shadeWithContext(ray, record, scene);
     }
 
+    /** Glass needs an inside: the refracted ray travels through it. */
+    @Override
+    public boolean needsInside() {
+        return true;
+    }
+
     /** For the render plan: at most one mirror and one refraction ray per hit, no light evaluated. */
     @Override
-    public java.util.Set<ray.plan.Term> terms() {
-        return java.util.EnumSet.of(ray.plan.Term.MIRROR, ray.plan.Term.REFRACTION);
+    public java.util.Set<ray.material.Term> terms() {
+        return java.util.EnumSet.of(ray.material.Term.MIRROR, ray.material.Term.REFRACTION);
     }
 
     @Override

@@ -9,9 +9,6 @@ import ray.Scene;
 import ray.TraceContext;
 import ray.light.Light;
 import ray.light.LightSample;
-import ray.plan.RenderPlan;
-import ray.plan.Skip;
-import ray.plan.Term;
 
 /**
  * Lambertian reflection with an ambient term:
@@ -55,13 +52,21 @@ public class Diffuse extends Material {
         return t;
     }
 
+    /** Evaluates the lights unless it has no direct term and the plan skips them there. */
+    @Override
+    public HitCost hitCost(ShadingPlan plan) {
+        HitCost c = super.hitCost(plan);
+        return c.evaluatesLights() || plan.skipsLightsWithoutDirectTerm() ? c
+                : new HitCost(c.terms(), c.mirrorRays(), c.refractionRays(), true, c.weight(), c.foldedLevels());
+    }
+
     /** Caches k_a I_a and the lights to evaluate: none where the plan finds no direct term. */
     @Override
-    public void planned(RenderPlan plan) {
+    public void planned(ShadingPlan plan) {
         Scene scene = plan.scene();
         Vector3d ia = scene.ambientLight;
         ambient = new double[] {ambientColor.x * ia.x, ambientColor.y * ia.y, ambientColor.z * ia.z};
-        lights = plan.skipping(Skip.NO_DIRECT_TERM) && !Term.direct(terms()) ? new Light[0] : plan.lights();
+        lights = hitCost(plan).evaluatesLights() ? plan.lights() : new Light[0];
         plannedFor = scene;
     }
 
@@ -88,6 +93,7 @@ public class Diffuse extends Material {
         }
         Vector3d n = rec.normal;
         LightSample s = ctx.lightSample;
+        Vector3d kd = diffuseColorAt(rec, ctx.reflectance);   // k_d here: the field, or a texture's value
         Vector3d ks = specularColorOrNull();   // null: no highlight term at all (plain Diffuse)
         for (Light light : ls) {
             for (int i = 0, count = light.sampleCount(); i < count; i++) {
@@ -103,14 +109,14 @@ public class Diffuse extends Material {
                 Vector3d li = s.intensity;
                 if (ks == null) {
                     // k_d nl + 0: the same sums as with a zero highlight (0 * 0 = +0), without its calls
-                    r += li.x * (diffuseColor.x * nl + 0.0);
-                    g += li.y * (diffuseColor.y * nl + 0.0);
-                    b += li.z * (diffuseColor.z * nl + 0.0);
+                    r += li.x * (kd.x * nl + 0.0);
+                    g += li.y * (kd.y * nl + 0.0);
+                    b += li.z * (kd.z * nl + 0.0);
                 } else {
                     double spec = specular(ray, n, l);
-                    r += li.x * (diffuseColor.x * nl + ks.x * spec);
-                    g += li.y * (diffuseColor.y * nl + ks.y * spec);
-                    b += li.z * (diffuseColor.z * nl + ks.z * spec);
+                    r += li.x * (kd.x * nl + ks.x * spec);
+                    g += li.y * (kd.y * nl + ks.y * spec);
+                    b += li.z * (kd.z * nl + ks.z * spec);
                 }
             }
         }
@@ -121,13 +127,36 @@ public class Diffuse extends Material {
         return c.x == 0 && c.y == 0 && c.z == 0;
     }
 
-    /** Specular factor for the light direction l (0 for a pure diffuse material). */
-    double specular(Ray ray, Vector3d n, Vector3d l) {
+    /**
+     * The reflectance hook: k_d at the hit, for every light of this hit. The default is the
+     * {@code diffuseColor} field; a textured material returns its texture's value there, written into
+     * {@code scratch} (this thread's, free to overwrite) and returned, and copies nothing else: the light
+     * loop, the plan's cache and the shadow rays stay Diffuse's.
+     *
+     * <pre>
+     * public class Checker extends Diffuse {
+     *     protected Vector3d diffuseColorAt(IntersectionRecord rec, Vector3d scratch) {
+     *         boolean odd = ((int) Math.floor(rec.location.x) + (int) Math.floor(rec.location.z) &amp; 1) != 0;
+     *         if (odd) {
+     *             return diffuseColor;
+     *         }
+     *         scratch.set(0.1, 0.1, 0.1);
+     *         return scratch;
+     *     }
+     * }
+     * </pre>
+     */
+    protected Vector3d diffuseColorAt(IntersectionRecord rec, Vector3d scratch) {
+        return diffuseColor;
+    }
+
+    /** The highlight hook: the specular factor for the unit light direction l (0 for a pure diffuse material). */
+    protected double specular(Ray ray, Vector3d n, Vector3d l) {
         return 0;
     }
 
     /** k_s, or null when the material has no highlight (then {@link #specular} is never called). */
-    Vector3d specularColorOrNull() {
+    protected Vector3d specularColorOrNull() {
         return null;
     }
 

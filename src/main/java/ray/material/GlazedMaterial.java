@@ -9,9 +9,6 @@ import ray.IntersectionRecord;
 import ray.Ray;
 import ray.Scene;
 import ray.TraceContext;
-import ray.plan.RenderPlan;
-import ray.plan.Skip;
-import ray.plan.Term;
 
 /**
  * A glazed surface: a base material plus an ideal mirror reflection,
@@ -45,15 +42,46 @@ public class GlazedMaterial extends Material {
         return shadeWithContext(ray, record, scene);
     }
 
-    /** The base's terms and, where some level of the chain reflects, one mirror ray per hit. */
+    /** The base's terms and, where this level reflects, the mirror term. */
     @Override
     public Set<Term> terms() {
         Set<Term> t = EnumSet.noneOf(Term.class);
-        t.addAll(RenderPlan.termsOf(base));
+        if (base != null) {
+            t.addAll(base.terms());
+        }
         if (mirrorCoefficient != 0) {
             t.add(Term.MIRROR);
         }
         return t;
+    }
+
+    /** The base, which this material shades through. */
+    @Override
+    public List<Material> parts() {
+        return base == null ? List.of() : List.of(base);
+    }
+
+    /**
+     * One mirror ray per level of the chain (one for the whole chain when the plan folds it, none for a
+     * level with k_m = 0 when the plan skips those), plus what the base at the bottom casts; the mirror
+     * ray's weight is the sum of the levels' |k_m| where the base casts no secondary ray itself.
+     */
+    @Override
+    public HitCost hitCost(ShadingPlan plan) {
+        List<GlazedMaterial> levels = plan.foldsGlazedChains() ? chain() : List.of(this);
+        int rays = 0;
+        double k = 0;
+        for (GlazedMaterial level : levels) {
+            if (level.mirrorCoefficient != 0 || !plan.skipsZeroMirrors()) {
+                rays++;
+            }
+            k += Math.abs(level.mirrorCoefficient);
+        }
+        Material bottom = levels.get(levels.size() - 1).base;
+        HitCost b = bottom == null ? HitCost.of(EnumSet.noneOf(Term.class)) : bottom.hitCost(plan);
+        int own = plan.foldsGlazedChains() ? Math.min(rays, 1) : rays;
+        double weight = b.mirrorRays() + b.refractionRays() > 0 || b.unknown() ? Double.POSITIVE_INFINITY : k;
+        return new HitCost(terms(), own + b.mirrorRays(), b.refractionRays(), b.evaluatesLights(), weight, levels.size());
     }
 
     /**
@@ -75,9 +103,9 @@ public class GlazedMaterial extends Material {
      * coefficients added in that order (innermost first) give the unfolded sums bit for bit.
      */
     @Override
-    public void planned(RenderPlan plan) {
-        List<GlazedMaterial> levels = plan.skipping(Skip.FOLD_GLAZED) ? chain() : List.of(this);
-        boolean skipZero = plan.skipping(Skip.ZERO_MIRROR);
+    public void planned(ShadingPlan plan) {
+        List<GlazedMaterial> levels = plan.foldsGlazedChains() ? chain() : List.of(this);
+        boolean skipZero = plan.skipsZeroMirrors();
         double[] ks = new double[levels.size()];
         int n = 0;
         for (int i = levels.size() - 1; i >= 0; i--) {
@@ -120,7 +148,7 @@ public class GlazedMaterial extends Material {
         Vector3d c;
         if (planned && cutFaint) {   // opt-in, inexact: no ray where the path can no longer move a pixel much
             double before = ctx.pathWeight, w = before * weight;
-            if (w < RenderPlan.FAINT) {
+            if (w < ShadingPlan.FAINT) {
                 return;
             }
             ctx.pathWeight = w;

@@ -1,6 +1,7 @@
 package ray.material;
 
 import java.util.EnumSet;
+import java.util.List;
 import java.util.Set;
 import javax.vecmath.Vector3d;
 import ray.IntersectionRecord;
@@ -8,8 +9,6 @@ import ray.Ray;
 import ray.Scene;
 import ray.SceneObject;
 import ray.TraceContext;
-import ray.plan.RenderPlan;
-import ray.plan.Term;
 
 /**
  * How a surface reflects light. The framework's contract is {@link #shade}: the colour leaving
@@ -48,19 +47,48 @@ public abstract class Material implements SceneObject {
     }
 
     /**
-     * The terms this material's shading has, for the render plan (read once per render, before the
-     * first ray). Declare only terms that can be non-zero for this object's field values. The default,
-     * for a user's class the plan knows nothing about: every term, rays of its own included.
+     * The terms this material's shading has, its parts' included, for the render plan (read once per
+     * render, before the first ray), the way pbrt-v4's {@code BxDFFlags} name a BSDF's lobes. Declare only
+     * terms that can be non-zero for this object's field values. A subclass inherits the declaration it
+     * does not change (override this when your {@code shade} does something the class above does not).
+     * The default, for a class that declares nothing: every term, rays of its own included, so the plan
+     * assumes it needs everything.
      */
     public Set<Term> terms() {
         return EnumSet.allOf(Term.class);
     }
 
     /**
+     * The materials this one shades through (a composite's parts, as {@code Surface.operands()} lists a
+     * CSG's): the plan hands itself to them too. Glazed: its base. The default: none.
+     */
+    public List<Material> parts() {
+        return List.of();
+    }
+
+    /**
+     * What one hit on this material casts under {@code plan}'s exact skips, its parts' rays included. The
+     * default reads {@link #terms()}: one mirror ray for {@link Term#MIRROR}, one refraction ray for
+     * {@link Term#REFRACTION}, the lights evaluated for a direct term (and for rays of its own). A
+     * composite that folds work (Glazed folds a chain of Glazed bases into one mirror ray) says so here.
+     */
+    public HitCost hitCost(ShadingPlan plan) {
+        return HitCost.of(terms());
+    }
+
+    /**
+     * True when this material needs a closed surface, one with an inside (it refracts): a surface that
+     * can be open (a mesh) refuses it unless closed. The default: false.
+     */
+    public boolean needsInside() {
+        return false;
+    }
+
+    /**
      * Called once per render after the plan is derived and before the first ray: a built-in material
      * caches what the plan lets it skip. The default does nothing.
      */
-    public void planned(RenderPlan plan) {
+    public void planned(ShadingPlan plan) {
     }
 
     /** Framework form of the fast path, for built-in materials: runs it on this thread's context. */

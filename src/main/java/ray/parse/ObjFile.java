@@ -60,6 +60,23 @@ public final class ObjFile {
     }
 
     /**
+     * Reads {@code mesh}'s OBJ file (its {@code file} field, relative to {@code folder}, the scene file's
+     * folder) and hands the triangles to it. A file that cannot be opened, or a mesh the material refuses,
+     * is an {@link IllegalArgumentException}; a mistake inside the file a {@link SceneFormatException}.
+     */
+    public static void loadInto(ray.surface.Mesh mesh, Path folder) throws SceneFormatException {
+        Path path;
+        try {
+            path = folder.resolve(mesh.file);
+        } catch (java.nio.file.InvalidPathException e) {
+            throw new IllegalArgumentException("'" + mesh.file + "' is not a file name this system accepts (expected an OBJ file's path)");
+        }
+        String shown = path.toString();
+        ObjFile obj = read(path, shown);
+        mesh.setTriangles(obj.positions, obj.normals, obj.triangles, obj.cornerNormals, shown);
+    }
+
+    /**
      * Reads {@code path}, naming it {@code shown} in messages. A file that cannot be opened is an
      * {@link IllegalArgumentException} (the scene line that names it is at fault); a mistake inside it
      * a {@link SceneFormatException} at its own line.

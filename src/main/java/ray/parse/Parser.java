@@ -466,7 +466,9 @@ public final class Parser {
         try {
             ((SceneObject) o).init();
             if (o instanceof ReadsFiles r) {
-                readFiles(r);
+                readFiles(o, r);
+            } else if (o instanceof ray.surface.Mesh m) {   // geometry reads no files: the parser reads its OBJ
+                readFiles(o, folder -> ObjFile.loadInto(m, folder));
             }
         } catch (IllegalArgumentException | IllegalStateException e) {
             throw error(currentType + " " + o.getClass().getSimpleName() + ": " + e.getMessage());
@@ -515,12 +517,12 @@ public final class Parser {
     }
 
     /** Lets an object read its own files; a mistake in one is reported at that file's line, naming this object. */
-    private void readFiles(ReadsFiles r) throws SceneFormatException {
+    private void readFiles(Object o, ReadsFiles r) throws SceneFormatException {
         try {
             r.readFiles(folder());
         } catch (SceneFormatException e) {
             throw new SceneFormatException(e.file(), e.line(), e.problem() + " (read for the " + currentType + " "
-                    + r.getClass().getSimpleName() + " at " + file + ":" + line + ")");
+                    + o.getClass().getSimpleName() + " at " + file + ":" + line + ")");
         }
     }
 

@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import javax.vecmath.Vector3d;
+import ray.material.Term;
 import ray.RayKind;
 import ray.Scene;
 import ray.light.Light;
@@ -113,7 +114,7 @@ public final class PlanReport {
         }
         if (anyLight && !pure.isEmpty()) {
             saved.add("no shadow rays at the " + plural(pure.size(), "pure mirror") + " (" + names(pure)
-                    + "): a Glazed material without a base has no direct term");
+                    + "): only the mirror term, no direct light");
         }
         if (anyLight && !flat.isEmpty()) {
             saved.add("no light evaluation and no shadow rays at " + names(flat) + ": k_d = k_s = 0, no direct term");

@@ -8,10 +8,11 @@ import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import ray.material.Term;
 import ray.Scene;
 import ray.light.Light;
-import ray.material.GlazedMaterial;
 import ray.material.Material;
+import ray.material.ShadingPlan;
 import ray.settings.RenderSettings;
 import ray.surface.Surface;
 
@@ -22,7 +23,7 @@ import ray.surface.Surface;
  * no light evaluation where a material has no direct term, no dark light, no mirror ray where k_m = 0,
  * one mirror ray for a chain of Glazed materials. {@link PlanReport} prints it.
  */
-public final class RenderPlan {
+public final class RenderPlan implements ShadingPlan {
 
     /** Every exact skip off: the renderer does what it did before the plan. */
     public static final Set<Skip> NO_SKIPS = Collections.unmodifiableSet(EnumSet.noneOf(Skip.class));
@@ -32,7 +33,7 @@ public final class RenderPlan {
      * along its path is below this: half an 8-bit step for radiance up to 1. Inexact (brighter light
      * seen at the end of such a path is lost), so opt-in.
      */
-    public static final double FAINT = 0.5 / 255;
+    public static final double FAINT = ShadingPlan.FAINT;
 
     private final Scene scene;
     /** The render's settings, resolved against the scene: what the bound counts and the report prints. */
@@ -54,13 +55,12 @@ public final class RenderPlan {
         this.cutFaint = settings.cutsFaintPaths();
         this.skips = skips.isEmpty() ? NO_SKIPS : Collections.unmodifiableSet(EnumSet.copyOf(skips));
         List<Light> evaluated = new ArrayList<>();
-        for (Light l : scene.lights) {
-            boolean trusted = Trust.light(l);
-            if (trusted && l.isDark() && this.skips.contains(Skip.DARK_LIGHTS)) {
+        for (Light l : scene.lights) {   // a light's own declarations, inherited where its class does not change them
+            if (l.isDark() && this.skips.contains(Skip.DARK_LIGHTS)) {
                 dark.add(l);
                 continue;
             }
-            if (!trusted || l.shadowRaysPerPoint() < 0) {
+            if (l.shadowRaysPerPoint() < 0) {
                 unknownLights.add(l);
             }
             evaluated.add(l);
@@ -83,9 +83,14 @@ public final class RenderPlan {
         for (Material m : materials) {   // loops, not lambdas, here: the plan is derived at start-up
             todo.add(m);
         }
-        while (!todo.isEmpty()) {   // the bases a Glazed material shades, declared or not
-            if (todo.pop() instanceof GlazedMaterial g && g.base != null && materials.add(g.base)) {
-                todo.push(g.base);
+        while (!todo.isEmpty()) {   // the parts a composite material shades through (a Glazed base), declared or not
+            Material m = todo.pop();
+            if (m != null) {
+                for (Material part : m.parts()) {
+                    if (materials.add(part)) {
+                        todo.push(part);
+                    }
+                }
             }
         }
         materials.remove(null);
@@ -96,28 +101,17 @@ public final class RenderPlan {
      * Notes how {@code s}'s material shades (unless it is {@code last}, noted just before) and queues its
      * operands; returns the material to compare the next surface with.
      */
-    /** The class of the surface {@link #use} saw last, and whether that class may have operands at all. */
-    private Class<? extends Surface> lastClass;
-    private boolean lastMayHaveOperands;
-
     private Material use(Surface s, Material last, java.util.ArrayDeque<Surface> parts) {
         Material m = s.material;
         if (m != null && m != last) {
             if (!used.containsKey(m)) {
-                used.put(m, Shading.of(m, skips));
+                used.put(m, Shading.of(m, this));
             }
             last = m;
         }
-        Class<? extends Surface> c = s.getClass();
-        if (c != lastClass) {
-            lastClass = c;
-            lastMayHaveOperands = Trust.mayHaveOperands(c);
-        }
-        if (lastMayHaveOperands) {
-            List<Surface> ops = s.operands();
-            for (int i = 0; i < ops.size(); i++) {
-                parts.add(ops.get(i));
-            }
+        List<Surface> ops = s.operands();
+        for (int i = 0; i < ops.size(); i++) {
+            parts.add(ops.get(i));
         }
         return last;
     }
@@ -146,8 +140,24 @@ public final class RenderPlan {
     }
 
     /** True when mirror paths fainter than {@link #FAINT} are cut (the one inexact skip, opt-in). */
+    @Override
     public boolean cutsFaintPaths() {
         return cutFaint;
+    }
+
+    @Override
+    public boolean skipsLightsWithoutDirectTerm() {
+        return skips.contains(Skip.NO_DIRECT_TERM);
+    }
+
+    @Override
+    public boolean skipsZeroMirrors() {
+        return skips.contains(Skip.ZERO_MIRROR);
+    }
+
+    @Override
+    public boolean foldsGlazedChains() {
+        return skips.contains(Skip.FOLD_GLAZED);
     }
 
     /** Hands the plan to every material ({@link Material#planned}); the scene's preparation calls it. */
@@ -157,11 +167,13 @@ public final class RenderPlan {
         }
     }
 
+    @Override
     public Scene scene() {
         return scene;
     }
 
     /** The lights a direct term evaluates: the scene's lights without the dark ones (when skipping them). */
+    @Override
     public Light[] lights() {
         return lights;
     }
@@ -178,17 +190,5 @@ public final class RenderPlan {
     /** Upper bounds on the rays of each kind this render can cast. */
     public RayBound bound() {
         return bound;
-    }
-
-    /**
-     * The terms a material declares, or every term when the plan cannot trust its declaration (a user's
-     * class, or a subclass that shades its own way); none for null. Composite materials ask this of
-     * their parts.
-     */
-    public static Set<Term> termsOf(Material m) {
-        if (m == null) {
-            return EnumSet.noneOf(Term.class);
-        }
-        return Trust.material(m) ? m.terms() : EnumSet.allOf(Term.class);
     }
 }

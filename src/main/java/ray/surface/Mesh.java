@@ -1,7 +1,5 @@
 package ray.surface;
 
-import java.nio.file.InvalidPathException;
-import java.nio.file.Path;
 import java.util.List;
 import ray.IntersectionRecord;
 import ray.Ray;
@@ -9,14 +7,10 @@ import ray.Scene;
 import ray.TraceContext;
 import ray.accel.Aabb;
 import ray.accel.Bvh;
-import ray.material.DielectricMaterial;
-import ray.parse.ObjFile;
-import ray.parse.ReadsFiles;
-import ray.parse.SceneFormatException;
 
 /**
- * A triangle mesh read from a Wavefront OBJ file ({@link ObjFile}: faces of more than three corners
- * are split into fans). Its triangles go into the scene's BVH one by one ({@link #collectPrimitives}),
+ * A triangle mesh from a Wavefront OBJ file (read by the parser, {@code ray.parse.ObjFile}, which hands
+ * the triangles over through {@link #setTriangles}: faces of more than three corners are split into fans). Its triangles go into the scene's BVH one by one ({@link #collectPrimitives}),
  * packed and tested with {@link Triangle}'s watertight kernel, so a mesh of millions of triangles is
  * traced in logarithmic time.
  *
@@ -35,7 +29,7 @@ import ray.parse.SceneFormatException;
  * ray sees. A mesh is closed ({@link #isClosed}, so a CSG operand) when it is two-sided and every
  * edge belongs to exactly two faces running along it in opposite directions.
  */
-public class Mesh extends Surface implements ReadsFiles {
+public class Mesh extends Surface {
 
     /** The OBJ file, relative to the scene file's folder. */
     public String file;
@@ -69,32 +63,21 @@ public class Mesh extends Surface implements ReadsFiles {
         }
     }
 
-    @Override
-    public void readFiles(Path folder) throws SceneFormatException {
-        Path path;
-        try {
-            path = folder.resolve(file);
-        } catch (InvalidPathException e) {
-            throw new IllegalArgumentException("'" + file + "' is not a file name this system accepts (expected an OBJ file's path)");
+    /**
+     * Takes the triangles read from {@code file} (shown as {@code source} in messages): float xyz
+     * positions and normals, three position indices per triangle and, per corner, a normal index or -1
+     * ({@code cornerNormals} null for a file without normals). Throws IllegalArgumentException for a file
+     * without faces, or an open mesh whose material needs an inside ({@code Material.needsInside()}).
+     */
+    public void setTriangles(float[] positions, float[] normals, int[] triangles, int[] cornerNormals, String source) {
+        if (triangles.length == 0) {
+            throw new IllegalArgumentException("the OBJ file " + source + " has no faces (expected at least one 'f' line)");
         }
-        shown = path.toString();
-        ObjFile obj = ObjFile.read(path, shown);
-        if (obj.triangleCount() == 0) {
-            throw new IllegalArgumentException("the OBJ file " + shown + " has no faces (expected at least one 'f' line)");
-        }
-        set(obj);
-        if (material instanceof DielectricMaterial && !isClosed()) {
-            throw new IllegalArgumentException("a Mesh with a DielectricMaterial must be closed: " + notClosedReason()
-                    + " (glass needs an inside)");
-        }
-    }
-
-    /** Takes the mesh from an OBJ file already read. */
-    void set(ObjFile obj) {
-        positions = obj.positions;
-        normals = unit(obj.normals);
-        triangles = obj.triangles;
-        cornerNormals = smooth == 1 ? obj.cornerNormals : null;
+        shown = source;
+        this.positions = positions;
+        this.normals = unit(normals);
+        this.triangles = triangles;
+        this.cornerNormals = smooth == 1 ? cornerNormals : null;
         // only referenced vertices count: a file may hold vertices no face uses
         Aabb b = new Aabb();
         for (int c : triangles) {
@@ -103,6 +86,10 @@ public class Mesh extends Surface implements ReadsFiles {
         box = b;
         topologyChecked = false;
         own = null;
+        if (material != null && material.needsInside() && !isClosed()) {
+            throw new IllegalArgumentException("a Mesh with a " + material.getClass().getSimpleName() + " must be closed: "
+                    + notClosedReason() + " (glass needs an inside)");
+        }
     }
 
     /** The normals scaled to length 1 (an OBJ's need not be), so each corner weighs only by its barycentric. */

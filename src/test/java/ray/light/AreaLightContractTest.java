@@ -144,7 +144,7 @@ class AreaLightContractTest {
         TraceContext ctx = TraceContext.current(scene);
         try {
             ctx.sample.start(jittered, 3, 5, 1);
-            LightSample out = new LightSample();
+            LightSample out = new LightSample(ctx.sample);   // the light draws from the sample handed to it
             IntersectionRecord rec = at(0.25, -1, 0.75);
             for (int k = 0; k < n * n; k++) {
                 double u = jittered.get(3, 5, 1, 2 + 2 * k), v = jittered.get(3, 5, 1, 3 + 2 * k);

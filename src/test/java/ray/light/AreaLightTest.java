@@ -54,7 +54,7 @@ class AreaLightTest {
         Scene s = new Scene();
         s.camera = new Camera();
         TraceContext.current(s).sample.start(sampler, px, 0, 0);
-        LightSample out = new LightSample();
+        LightSample out = new LightSample(TraceContext.current(s).sample);
         double e = 0;
         for (int k = 0; k < l.sampleCount(); k++) {
             if (l.sample(rec, s, k, out)) {

@@ -164,7 +164,7 @@ class PlanCommandTest {
         assertEquals(0, run("--plan", scene.toString()));
         String o = out();
         assertTrue(o.startsWith("plan for " + scene + " (240x180, MaxDepth 10)\n"), o);
-        assertTrue(o.contains("  saved: no shadow rays at the 1 pure mirror (noBase): a Glazed material without a base has no direct term"), o);
+        assertTrue(o.contains("  saved: no shadow rays at the 1 pure mirror (noBase): only the mirror term, no direct light"), o);
         assertTrue(o.contains("  refraction          off  no material refracts"), o);
         Files.writeString(scene, Files.readString(scene).replaceAll("(?m)^AmbientLight .*$", "AmbientLight [0 0 0]"));
         assertEquals(0, run("--plan", scene.toString()));

@@ -140,7 +140,7 @@ class CSGPrimitivesPropertyTest {
         m.twoSided = 1;
         m.material = CSGTest.material();
         m.init();
-        m.readFiles(dir);
+        ray.parse.ObjFile.loadInto(m, dir);
         List<Float> planes = new ArrayList<>();
         for (int[] f : w.faces) {
             float[] a = w.vertices.get(f[0]), b = w.vertices.get(f[1]), c = w.vertices.get(f[2]);

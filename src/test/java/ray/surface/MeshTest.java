@@ -39,7 +39,7 @@ class MeshTest {
         m.twoSided = twoSided;
         m.material = CSGTest.material();
         m.init();
-        m.readFiles(dir);
+        ray.parse.ObjFile.loadInto(m, dir);
         return m;
     }
 

@@ -1,8 +1,8 @@
-package ray.plan;
+package ray.material;
 
 /**
  * A term of a material's shading, as the material declares it to the render plan
- * ({@link ray.material.Material#terms()}), the way pbrt-v4's {@code BxDFFlags} and Mitsuba 3's
+ * ({@link Material#terms()}), the way pbrt-v4's {@code BxDFFlags} and Mitsuba 3's
  * {@code BSDFFlags} name a BSDF's lobes. The plan reads the declarations once per render and casts
  * only what they allow.
  */
