@@ -136,12 +136,86 @@ final class ClassResolver {
         return null;
     }
 
+    /**
+     * The built-in classes a header of {@code type} can name, for messages: the framework's own first (as
+     * the course names them), then the others by name, aliases in parentheses. Derived from the classes
+     * in the base class's package on the class path (each a concrete public subclass with a public no-arg
+     * constructor, exactly what {@link #resolve} accepts), never kept by hand.
+     */
     static String builtIns(String type) {
-        switch (type) {
-            case "Camera": return "Camera";
-            case "Surface": return "Sphere, Triangle, Plane, Disc, Box, Cylinder, Cone, Torus";
-            case "Material": return "Diffuse, BlinnPhong, GlazedMaterial (or Glazed), DielectricMaterial (or Dielectric)";
-            default: return "PointLight, SpotLight, AreaLight";
+        return BuiltIns.LISTS.getOrDefault(type, "");
+    }
+
+    /** The lists, found once on first use (only messages need them). */
+    private static final class BuiltIns {
+        /** The framework's classes, listed first in this order; the rest follow by name. */
+        private static final List<String> FIRST = List.of("Sphere", "Triangle", "Diffuse", "BlinnPhong", "GlazedMaterial", "PointLight");
+        static final Map<String, String> LISTS = scan();
+
+        private static Map<String, String> scan() {
+            Map<String, String> out = new HashMap<>();
+            for (Map.Entry<String, Class<?>> e : BASES.entrySet()) {
+                List<String> names = new ArrayList<>();
+                for (String n : classesBeside(e.getValue())) {
+                    if (acceptable(e.getValue(), e.getValue().getPackageName() + "." + n)) {
+                        names.add(n);
+                    }
+                }
+                names.sort(java.util.Comparator.comparingInt((String n) -> FIRST.contains(n) ? FIRST.indexOf(n) : FIRST.size())
+                        .thenComparing(String.CASE_INSENSITIVE_ORDER));
+                List<String> shown = new ArrayList<>();
+                for (String n : names) {
+                    String alias = null;
+                    for (Map.Entry<String, String> a : ALIASES.entrySet()) {
+                        if (a.getValue().equals(n)) {
+                            alias = a.getKey();
+                        }
+                    }
+                    shown.add(alias == null ? n : n + " (or " + alias + ")");
+                }
+                out.put(e.getKey(), String.join(", ", shown));
+            }
+            return Map.copyOf(out);
+        }
+
+        private static boolean acceptable(Class<?> base, String qualified) {
+            try {
+                Class<?> c = Class.forName(qualified, false, base.getClassLoader());
+                return base.isAssignableFrom(c) && !c.isInterface() && !Modifier.isAbstract(c.getModifiers())
+                        && Modifier.isPublic(c.getModifiers()) && Modifier.isPublic(c.getConstructor().getModifiers());
+            } catch (ClassNotFoundException | NoSuchMethodException | LinkageError | RuntimeException e) {
+                return false;
+            }
+        }
+
+        /** The simple names of the top-level classes in {@code base}'s package, from where {@code base} was loaded (a folder or a jar). */
+        private static List<String> classesBeside(Class<?> base) {
+            List<String> names = new ArrayList<>();
+            String dir = base.getPackageName().replace('.', '/') + "/";
+            try {
+                java.net.URL where = base.getProtectionDomain().getCodeSource().getLocation();
+                java.nio.file.Path root = java.nio.file.Path.of(where.toURI());
+                if (java.nio.file.Files.isDirectory(root)) {
+                    try (java.util.stream.Stream<java.nio.file.Path> files = java.nio.file.Files.list(root.resolve(dir))) {
+                        files.forEach(f -> addClass(f.getFileName().toString(), names));
+                    }
+                } else {
+                    try (java.util.jar.JarFile jar = new java.util.jar.JarFile(root.toFile())) {
+                        jar.stream().map(java.util.jar.JarEntry::getName)
+                                .filter(n -> n.startsWith(dir) && n.indexOf('/', dir.length()) < 0)
+                                .forEach(n -> addClass(n.substring(dir.length()), names));
+                    }
+                }
+            } catch (java.io.IOException | java.net.URISyntaxException | RuntimeException e) {
+                names.add(base.getSimpleName());   // nowhere to look: at least the base's own name
+            }
+            return names;
+        }
+
+        private static void addClass(String file, List<String> names) {
+            if (file.endsWith(".class") && file.indexOf('$') < 0 && !file.equals("package-info.class")) {
+                names.add(file.substring(0, file.length() - ".class".length()));
+            }
         }
     }
 }

@@ -21,7 +21,6 @@ import ray.SceneObject;
 import ray.light.Light;
 import ray.material.Material;
 import ray.surface.Surface;
-import ray.settings.RenderOption;
 
 /**
  * Reads the scene format ({@code scene-format.md}): object headers {@code <ObjectType> <ClassName> [name]},
@@ -33,11 +32,18 @@ import ray.settings.RenderOption;
  */
 public final class Parser {
 
-    static final List<String> GLOBALS = List.of("BGColor", "AmbientLight", "Width", "Height", "AASamples", "MaxDepth", "Sampler",
-            "TargetError");
+    /** The globals' keywords ({@link Globals}: the one table of them). */
+    static final List<String> GLOBALS = Globals.NAMES;
     static final List<String> TYPES = List.of("int", "double", "String", "ref", "Vector3d");
-    private static final List<String> KEYWORDS = List.of("Camera", "Surface", "Material", "Light",
-            "BGColor", "AmbientLight", "Width", "Height", "AASamples", "MaxDepth", "Sampler", "TargetError", "int", "double", "String", "ref", "Vector3d");
+    /** Every word a line can start with, for "did you mean" hints: headers, globals, parameter types. */
+    private static final List<String> KEYWORDS = keywords();
+
+    private static List<String> keywords() {
+        List<String> k = new ArrayList<>(List.of("Camera", "Surface", "Material", "Light"));
+        k.addAll(GLOBALS);
+        k.addAll(TYPES);
+        return List.copyOf(k);
+    }
 
     private final String file;
     private final ClassResolver resolver;
@@ -539,65 +545,19 @@ public final class Parser {
     // ---- globals ----
 
     private void global(String key, String value) throws SceneFormatException {
-        boolean vector = key.equals("BGColor") || key.equals("AmbientLight");
+        Globals g = Globals.of(key);
         Integer first = globalLines.put(key, line);
         if (first != null) {
             throw error(key + " is set twice (first at line " + first + "; expected each setting once)");
         }
-        RenderOption option = RenderOption.ofGlobal(key);
         if (value.isEmpty()) {
-            throw error("'" + key + "' needs a value (expected '" + key + " " + (vector ? "[r g b]" : option != null ? option.hint
-                    : "<pixels>") + "')");
+            throw error("'" + key + "' needs a value (expected '" + key + " " + g.hint + "')");
         }
         try {
-            switch (key) {
-                case "BGColor" -> scene.backgroundColor = Values.parseVector(value, key);
-                case "AmbientLight" -> scene.ambientLight = Values.parseVector(value, key);
-                case "Width" -> scene.width = range(value, key, 1, Limits.MAX_SIDE);
-                case "Height" -> scene.height = range(value, key, 1, Limits.MAX_SIDE);
-                case "AASamples" -> scene.samplesPerPixel = range(value, option);
-                case "Sampler" -> scene.sampler = samplerName(value);
-                case "TargetError" -> scene.targetError = targetError(value);
-                case "MaxDepth" -> scene.maxDepth = range(value, option);
-                default -> throw new IllegalStateException("no global " + key);
-            }
+            g.read(value, scene);
         } catch (Problem p) {
             throw error(p.getMessage());
         }
-    }
-
-    private static String samplerName(String value) throws Problem {
-        List<String> names = RenderOption.SAMPLER.choices;
-        if (!RenderOption.SAMPLER.accepts(value)) {
-            throw new Problem(Values.quote("Sampler " + value) + " names no sampler (" + Values.caseHint(value, names)
-                    + "expected one of " + String.join(", ", names) + ")");
-        }
-        return value;
-    }
-
-    private static double targetError(String value) throws Problem {
-        double e = Values.parseDouble(value, "TargetError");
-        if (!RenderOption.TARGET_ERROR.accepts(e)) {
-            throw new Problem(Values.quote("TargetError " + value) + " is out of range (expected " + RenderOption.TARGET_ERROR.expected() + ")");
-        }
-        return e;
-    }
-
-    /** A whole-number global checked against its row of the render-settings table. */
-    private static int range(String value, RenderOption option) throws Problem {
-        return range(value, option.global, (int) option.min, (int) option.max);
-    }
-
-    private static int range(String value, String key, int min, int max) throws Problem {
-        String expected = " (expected " + min + " to " + max + ")";
-        if (!Values.isWhole(value)) {
-            throw new Problem(Values.quote(value) + " is not a whole number for " + key + expected);
-        }
-        Long v = Values.wholeValue(value);
-        if (v == null || v < min || v > max) {
-            throw new Problem(Values.quote(key + " " + value) + " is out of range" + expected);
-        }
-        return (int) (long) v;
     }
 
     private Scene finish() throws SceneFormatException {

@@ -13,22 +13,21 @@ import ray.TraceContext;
  * (Horvitz-Thompson).
  *
  * <p><b>Why two sets and a product.</b> With one probe P per pixel, (I - P)^2 estimates d^2 + var(P),
- * d = I - truth: the probe's own error counts in, and where the image is good (an 8 x 8 budget, or a
- * scene whose only error is a few edges) it is as large as the error measured, so the estimate came out
- * up to 1.7x too high. With two independent probes A and B, E[(I - A)(I - B)] = d^2 exactly (each is an
+ * d = I - truth: the probe's own error counts in, and where the image is good it is as large as the
+ * error measured. With two independent probes A and B, E[(I - A)(I - B)] = d^2 exactly (each is an
  * unbiased estimate of the pixel's integral, and their errors are independent), so the probe's noise
  * adds spread but no bias. (The product equals (I - (A + B) / 2)^2 - (A - B)^2 / 4: the pooled probe's
  * squared difference minus an unbiased estimate of its own variance.)
  *
  * <p><b>Which pixels.</b> Pixel i is probed with probability p_i proportional to the largest
  * per-sample variance in its 3 x 3 neighbourhood over its own sample count (what its mean's variance
- * would be had its samples disagreed like its neighbours': a pixel that stopped at 4 samples beside an
- * edge is where a missed edge hides, and held 40% of the error in some scenes), at least a quarter of
- * the largest squared difference between its mean and a neighbour's over its count (the spread of a
- * pixel that the edge between them halves: pixels whose samples all agree yet sit on a contrast, which
- * held a quarter of behind-camera's error), plus a third of the mean of those (so every pixel can be picked; three quarters of the probes go where samples disagree), and
- * contributes (I - A)(I - B) / p_i. The pixels are picked by systematic sampling in scan order (fixed
- * count, spread over the image).
+ * would be had its samples disagreed like its neighbours': a pixel that stopped early beside an edge is
+ * where a missed edge hides), at least a quarter of the largest squared difference between its mean and
+ * a neighbour's over its count (the spread of a pixel that the edge between them halves: samples that
+ * all agree on a contrast), plus a third of the mean of those (so every pixel can be picked; three
+ * quarters of the probes go where samples disagree), and contributes (I - A)(I - B) / p_i. The pixels
+ * are picked by systematic sampling in scan order (fixed count, spread over the image). How each of
+ * these choices was measured against the alternatives is in docs/accuracy.md.
  *
  * <p><b>How many samples.</b> Each set has {@link #halfSamples} of the pixel's own count (twice it, so
  * a set alone is better than the pixel it judges), {@link #CALM} where the neighbourhood's samples all
@@ -39,8 +38,7 @@ import ray.TraceContext;
  * <p><b>Its spread.</b> A 95% interval comes with the estimate, from the spread of the probes'
  * contributions (the with-replacement variance formula). It cannot see error in pixels no probe hit,
  * so at very small errors (below about {@link #RESOLUTION} steps, where a few pixels hold most of it)
- * it can be too narrow: there, measured on every scene, the estimate can be off by up to 1.6x either
- * way while both are far below one 8-bit step.
+ * it can be too narrow, and the estimate does not resolve the error to a factor of 1.5 (docs/accuracy.md).
  */
 final class ErrorProbe {
 
