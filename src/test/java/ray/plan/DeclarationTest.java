@@ -25,6 +25,13 @@ import ray.material.GlazedMaterial;
  */
 class DeclarationTest {
 
+    /** A 4 x 4 image of a wall of material {@code material} (declared {@code declared}) lit by a point light of intensity {@code i}. */
+    private static String wall(String declared, String material, String i) {
+        return "Width 4\nHeight 4\n\nCamera Camera\n\n" + declared
+                + "Surface Triangle\nVector3d v0 [-100 -100 0]\nVector3d v1 [100 -100 0]\nVector3d v2 [0 100 0]\nref material " + material + "\n\n"
+                + "Light PointLight\nVector3d position [0 0 3]\nVector3d intensity [" + i + "]\n\n";
+    }
+
     /** A textured Diffuse: only its reflectance changes, so Diffuse's declaration still describes it. */
     public static class Checker extends Diffuse {
         @Override
@@ -63,10 +70,7 @@ class DeclarationTest {
 
     @Test
     void aTexturedDiffuseIsPlannedLikeDiffuseAndAUserClassIsUnbounded() throws Exception {
-        String text = "Width 4\nHeight 4\n\nCamera Camera\n\nMaterial DeclarationTest$Checker m\n\n"
-                + "Surface Triangle\nVector3d v0 [-100 -100 0]\nVector3d v1 [100 -100 0]\nVector3d v2 [0 100 0]\nref material m\n\n"
-                + "Light PointLight\nVector3d position [0 0 3]\nVector3d intensity [1 1 1]\n\n";
-        Scene s = PlanFixture.parse(text.replace("DeclarationTest$Checker", "Diffuse"));
+        Scene s = PlanFixture.parse(wall("Material Diffuse m\n\n", "m", "1 1 1"));
         s.materials.clear();
         Checker c = new Checker();
         s.surfaces.get(0).material = c;
@@ -108,9 +112,7 @@ class DeclarationTest {
 
     @Test
     void aCompositesPartsArePlanned() throws Exception {
-        String text = "Width 4\nHeight 4\n\nCamera Camera\n\nMaterial Diffuse d\n\n"
-                + "Surface Triangle\nVector3d v0 [-100 -100 0]\nVector3d v1 [100 -100 0]\nVector3d v2 [0 100 0]\nref material d\n\n"
-                + "Light PointLight\nVector3d position [0 0 3]\nVector3d intensity [1 1 1]\n\n";
+        String text = wall("Material Diffuse d\n\n", "d", "1 1 1");
         Scene s = PlanFixture.parse(text);
         Layered l = new Layered();
         s.surfaces.get(0).material = l;
@@ -123,10 +125,7 @@ class DeclarationTest {
 
     @Test
     void aDarkUserLightIsNotSkippedAndAUserMaterialMakesTheBoundUnknown() throws Exception {
-        String text = "Width 4\nHeight 4\n\nCamera Camera\n\nMaterial Metal m\n\n"
-                + "Surface Triangle\nVector3d v0 [-100 -100 0]\nVector3d v1 [100 -100 0]\nVector3d v2 [0 100 0]\nref material m\n\n"
-                + "Light PointLight\nVector3d position [0 0 3]\nVector3d intensity [0 0 0]\n\n";
-        Scene s = PlanFixture.parse(text);
+        Scene s = PlanFixture.parse(wall("Material Metal m\n\n", "m", "0 0 0"));
         Lamp on = new Lamp();
         s.lights.add(on);
         RenderPlan p = RenderPlan.derive(s, EnumSet.allOf(Skip.class));
