@@ -5,7 +5,9 @@ package ray;
  * path); the renderer adds them up when the threads finish. Only {@link Scene}'s casting methods
  * count ({@link #count(RayKind)}); everything else reads.
  */
-public final class RayStats {
+public final class RayStats implements java.io.Serializable {
+
+    private static final long serialVersionUID = 1L;
     private final long[] rays = new long[RayKind.all().length];
     /** Samples whose value was NaN or infinite and were replaced by black (should stay 0). */
     public long invalidSamples;

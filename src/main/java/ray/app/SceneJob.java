@@ -208,9 +208,7 @@ final class SceneJob {
         long t3 = System.nanoTime();
         // plain concatenation, not printf: java.util.Formatter's first use loads locale data (~20 ms)
         if (!main.quiet && !main.json) {   // with --json, stdout holds JSON Lines only
-            summary.println(name + " -> " + target + " (" + scene.width + "x" + scene.height + ", " + settings.samples()
-                    + "x" + settings.samples() + " AA, " + Main.fixed(t3 - t0, 2) + " s, "
-                    + raysPerSecond(renderer.stats().total(), t2 - t1) + " rays/s: " + renderer.stats() + ")");
+            summary.println(RenderReport.summaryLine(name, target.toString(), scene, settings, renderer.stats(), t3 - t0, t2 - t1));
             SamplingOptions.report(summary, renderer.summary());
         }
         if (main.stats && main.json) {
@@ -218,12 +216,10 @@ final class SceneJob {
                     new long[] {t0, t1, t2, t3}));
         } else if (main.stats) {
             long build = scene.accelerator() instanceof Bvh b ? b.buildNanos() : 0;
-            String bvh = scene.accelerator() instanceof Bvh b && b.primitiveCount() > 0
-                    ? "; BVH " + Main.fixed(Math.round(1e9 * b.memoryBytes() / b.primitiveCount()), 1) + " bytes/primitive" : "";
-            long peak = Main.peakRssBytes();
-            summary.println("  parse " + Main.fixed(t1 - t0, 3) + " s, build " + Main.fixed(build, 3) + " s, render "
-                    + Main.fixed(t2 - t1 - build, 3) + " s, write " + Main.fixed(t3 - t2, 3) + " s; " + renderer.stats()
-                    + (peak > 0 ? "; peak RSS " + (peak >> 20) + " MiB" : "") + bvh + "; cpu " + Main.fixed(Main.processCpuNanos(), 3) + " s");
+            long bytes = scene.accelerator() instanceof Bvh b ? b.memoryBytes() : 0;
+            long primitives = scene.accelerator() instanceof Bvh b ? b.primitiveCount() : 0;
+            summary.println(RenderReport.statsLine(t1 - t0, build, t2 - t1 - build, t3 - t2, renderer.stats(), bytes, primitives,
+                    Main.peakRssBytes(), Main.processCpuNanos()));
         }
         if (renderer.stats().invalidSamples > 0) {
             err.println(name + ": warning: " + renderer.stats().invalidSamples + " samples were NaN or infinite and were left black");

@@ -36,10 +36,10 @@ final class AdaptivePixel {
     }
 
     /**
-     * Finishes pixel (x, y): its first batch is in {@code first} (and the film); {@code nudged} asks for
-     * at least {@link #NUDGED} samples whatever the first batch says.
+     * Finishes pixel (x, y), held at (fx, fy) of the film: its first batch is in {@code first} (and the
+     * film); {@code nudged} asks for at least {@link #NUDGED} samples whatever the first batch says.
      */
-    void render(int x, int y, Film film, double[] first, boolean nudged) {
+    void render(int x, int y, Film film, int fx, int fy, double[] first, boolean nudged) {
         int all = sampler.samplesPerPixel(), b0 = sampler.firstBatch();
         java.util.Arrays.fill(taken, false);
         for (int ch = 0; ch < 3; ch++) {
@@ -47,7 +47,7 @@ final class AdaptivePixel {
             m2[ch] = 0;
         }
         int k = 0;
-        for (int base = 3 * b0 * (y * film.width + x); k < b0; ) {
+        for (int base = 3 * b0 * (fy * film.width + fx); k < b0; ) {
             c.set(first[base + 3 * k], first[base + 3 * k + 1], first[base + 3 * k + 2]);
             keep(sampler.order(k), ++k);
         }
@@ -72,7 +72,7 @@ final class AdaptivePixel {
         sum[0] = r;
         sum[1] = g;
         sum[2] = b;
-        film.set(x, y, k, sum, mean, m2);
+        film.set(fx, fy, k, sum, mean, m2);
     }
 
     /** Stores the colour in {@link #c} as grid sample {@code index}, the {@code n}-th taken. */

@@ -55,18 +55,22 @@ final class ErrorProbe {
         static final Estimate NONE = new Estimate(Double.NaN, Double.NaN, Double.NaN, 0, 0);
     }
 
-    private final SampledRender render;
-    private final Renderer renderer;
     private final Scene scene;
     private final Film film;
     private final Image image;
 
-    ErrorProbe(SampledRender render, Renderer renderer, Scene scene, Film film, Image image) {
-        this.render = render;
-        this.renderer = renderer;
+    /** The probes of a finished adaptive render of the whole of {@code scene}: its film and image. */
+    ErrorProbe(Scene scene, Film film, Image image) {
         this.scene = scene;
         this.film = film;
         this.image = image;
+    }
+
+    /**
+     * Which pixels to probe and with how many samples: {@code chance[p]} > 0 for a probed pixel p (its
+     * probability of having been picked), {@code size[p]} the samples in each of its two sets.
+     */
+    record Plan(double[] chance, int[] size, int picked, long samples) {
     }
 
     /**
@@ -88,9 +92,36 @@ final class ErrorProbe {
         return Math.min(pixels, Math.max(Math.min(256, pixels), Math.min(want, pixels / 8)));
     }
 
-    /** Measures the estimated RMSE of the clamped image. */
-    Estimate measure() {
-        int w = scene.width, h = scene.height, pixels = w * h;
+    /** Measures the estimated RMSE of the clamped image, the probes rendered by {@code renderer}'s threads. */
+    Estimate measure(Renderer renderer) {
+        Plan plan = plan(film);
+        double[] contribution = new double[image.width * image.height];
+        Renderer.Area whole = new Renderer.Area(0, 0, image.width, image.height);
+        renderer.runTiles(image, new Renderer.TileWork() {
+            @Override
+            public Renderer.TileWorker worker(TraceContext ctx) {
+                Probes probes = new Probes(scene, ctx);
+                return new Renderer.TileWorker() {
+                    @Override
+                    public void tile(int x0, int y0, int x1, int y1) {
+                        for (int y = y0; y < y1; y++) {
+                            for (int x = x0; x < x1; x++) {
+                                int p = y * image.width + x;
+                                if (plan.chance[p] > 0) {
+                                    contribution[p] = probes.contribution(x, y, plan.size[p], image.rgb, 3 * p) / plan.chance[p];
+                                }
+                            }
+                        }
+                    }
+                };
+            }
+        }, false, whole);
+        return finish(plan, contribution);
+    }
+
+    /** Picks the pixels to probe from the film of a finished adaptive render of the whole image. */
+    static Plan plan(Film film) {
+        int w = film.width, h = film.height, pixels = w * h;
         // per-sample variance: how much the samples disagree, whatever their count
         double[] disagree = new double[pixels];
         for (int p = 0; p < pixels; p++) {
@@ -153,42 +184,22 @@ final class ErrorProbe {
             }
             running += c;
         }
-        // the two sets of each size in use (powers of two: index log2 m)
-        SobolSampler[] a = new SobolSampler[12], b = new SobolSampler[12];
         long samples = 0;
         for (int p = 0; p < pixels; p++) {
             if (chance[p] > 0) {
-                int m = size[p], k = Integer.numberOfTrailingZeros(m), side = (int) Math.ceil(Math.sqrt(m));
-                if (a[k] == null) {
-                    a[k] = new SobolSampler(side, SEED_A, m);
-                    b[k] = new SobolSampler(side, SEED_B, m);
-                }
-                samples += 2L * m;
+                samples += 2L * size[p];
             }
         }
-        double[] contribution = new double[pixels];
-        renderer.runTiles(image, new Renderer.TileWork() {
-            @Override
-            public Renderer.TileWorker worker(TraceContext ctx) {
-                Vector3d c = new Vector3d(), pa = new Vector3d(), pb = new Vector3d();
-                return new Renderer.TileWorker() {
-                    @Override
-                    public void tile(int x0, int y0, int x1, int y1) {
-                        for (int y = y0; y < y1; y++) {
-                            for (int x = x0; x < x1; x++) {
-                                int p = y * w + x;
-                                if (chance[p] > 0) {
-                                    int k = Integer.numberOfTrailingZeros(size[p]);
-                                    mean(ctx, a[k], x, y, c, pa);
-                                    mean(ctx, b[k], x, y, c, pb);
-                                    contribution[p] = crossError(x, y, pa, pb) / chance[p];
-                                }
-                            }
-                        }
-                    }
-                };
-            }
-        }, false);
+        return new Plan(chance, size, picked, samples);
+    }
+
+    /**
+     * The estimate from each pixel's contribution (zero where not probed; the probe's squared error
+     * over its chance), summed in scan order: the same number however the probes were split up.
+     */
+    static Estimate finish(Plan plan, double[] contribution) {
+        int pixels = contribution.length, picked = plan.picked;
+        double[] chance = plan.chance;
         double squared = 0;
         for (double d : contribution) {
             squared += d;
@@ -203,29 +214,50 @@ final class ErrorProbe {
         }
         double half = picked > 1 ? 1.96 * Math.sqrt(spread / ((double) picked * (picked - 1))) : Double.POSITIVE_INFINITY;
         return new Estimate(Math.sqrt(Math.max(0, squared) / pixels), Math.sqrt(Math.max(0, squared - half) / pixels),
-                Math.sqrt(Math.max(0, squared + half) / pixels), picked, (double) samples / pixels);
+                Math.sqrt(Math.max(0, squared + half) / pixels), picked, (double) plan.samples / pixels);
     }
 
-    /** The mean of pixel (x, y)'s samples from {@code probe}, clamped to [0, 1] per channel, into {@code out}. */
-    private void mean(TraceContext ctx, SobolSampler probe, int x, int y, Vector3d c, Vector3d out) {
-        double r = 0, g = 0, b = 0;
-        int n = probe.count();
-        for (int s = 0; s < n; s++) {
-            render.trace(ctx, probe, x, y, s, c);
-            r += c.x;
-            g += c.y;
-            b += c.z;
+    /** One render thread's probing: the two Sobol sets of each size in use (powers of two: index log2 m), made as needed. */
+    static final class Probes {
+        private final Scene scene;
+        private final TraceContext ctx;
+        private final SobolSampler[] a = new SobolSampler[12], b = new SobolSampler[12];
+        private final Vector3d c = new Vector3d(), pa = new Vector3d(), pb = new Vector3d();
+
+        Probes(Scene scene, TraceContext ctx) {
+            this.scene = scene;
+            this.ctx = ctx;
         }
-        out.set(Film.clamp(r / n), Film.clamp(g / n), Film.clamp(b / n));
-    }
 
-    /**
-     * (I - A)(I - B) for pixel (x, y) of the image I against probes A and B (clamped; mean over r, g, b;
-     * 8-bit steps squared): an unbiased estimate of the pixel's squared error, possibly negative.
-     */
-    private double crossError(int x, int y, Vector3d a, Vector3d b) {
-        int i = 3 * (y * image.width + x);
-        double r = Film.clamp(image.rgb[i]), g = Film.clamp(image.rgb[i + 1]), bl = Film.clamp(image.rgb[i + 2]);
-        return ((r - a.x) * (r - b.x) + (g - a.y) * (g - b.y) + (bl - a.z) * (bl - b.z)) / 3 * 255 * 255;
+        /**
+         * (I - A)(I - B) for pixel (x, y) whose image colour I is at {@code rgb[i..i+2]}, against probes A
+         * and B of {@code m} samples each (clamped; mean over r, g, b; 8-bit steps squared): an unbiased
+         * estimate of the pixel's squared error, possibly negative.
+         */
+        double contribution(int x, int y, int m, double[] rgb, int i) {
+            int k = Integer.numberOfTrailingZeros(m);
+            if (a[k] == null) {
+                int side = (int) Math.ceil(Math.sqrt(m));
+                a[k] = new SobolSampler(side, SEED_A, m);
+                b[k] = new SobolSampler(side, SEED_B, m);
+            }
+            mean(a[k], x, y, pa);
+            mean(b[k], x, y, pb);
+            double r = Film.clamp(rgb[i]), g = Film.clamp(rgb[i + 1]), bl = Film.clamp(rgb[i + 2]);
+            return ((r - pa.x) * (r - pb.x) + (g - pa.y) * (g - pb.y) + (bl - pa.z) * (bl - pb.z)) / 3 * 255 * 255;
+        }
+
+        /** The mean of pixel (x, y)'s samples from {@code probe}, clamped to [0, 1] per channel, into {@code out}. */
+        private void mean(SobolSampler probe, int x, int y, Vector3d out) {
+            double r = 0, g = 0, bl = 0;
+            int n = probe.count();
+            for (int s = 0; s < n; s++) {
+                SampledRender.trace(scene, ctx, probe, x, y, s, c);
+                r += c.x;
+                g += c.y;
+                bl += c.z;
+            }
+            out.set(Film.clamp(r / n), Film.clamp(g / n), Film.clamp(bl / n));
+        }
     }
 }

@@ -9,7 +9,9 @@ import javax.vecmath.Vector3d;
  * estimated error, which adaptive sampling and the render summary use (the PNG clamps to [0, 1] too).
  * Each pixel is written by one thread at a time.
  */
-public final class Film {
+public final class Film implements java.io.Serializable {
+
+    private static final long serialVersionUID = 1L;
 
     public final int width;
     public final int height;
@@ -127,6 +129,30 @@ public final class Film {
                     image.set(x, y, sum[i] / c, sum[i + 1] / c, sum[i + 2] / c);
                 }
             }
+        }
+    }
+
+    /** A new film of pixels [x0, x0 + w) x [y0, y0 + h) of this one. */
+    Film crop(int x0, int y0, int w, int h) {
+        Film out = new Film(w, h);
+        for (int y = 0; y < h; y++) {
+            int from = (y0 + y) * width + x0, to = y * w;
+            System.arraycopy(count, from, out.count, to, w);
+            System.arraycopy(sum, 3 * from, out.sum, 3 * to, 3 * w);
+            System.arraycopy(clampedMean, 3 * from, out.clampedMean, 3 * to, 3 * w);
+            System.arraycopy(m2, 3 * from, out.m2, 3 * to, 3 * w);
+        }
+        return out;
+    }
+
+    /** Copies {@code part}'s pixels into this film with its corner at (x0, y0). */
+    void place(Film part, int x0, int y0) {
+        for (int y = 0; y < part.height; y++) {
+            int from = y * part.width, to = (y0 + y) * width + x0;
+            System.arraycopy(part.count, from, count, to, part.width);
+            System.arraycopy(part.sum, 3 * from, sum, 3 * to, 3 * part.width);
+            System.arraycopy(part.clampedMean, 3 * from, clampedMean, 3 * to, 3 * part.width);
+            System.arraycopy(part.m2, 3 * from, m2, 3 * to, 3 * part.width);
         }
     }
 

@@ -4,7 +4,9 @@ import java.awt.image.BufferedImage;
 import javax.vecmath.Vector3d;
 
 /** A width x height image of linear RGB doubles, row 0 at the top. */
-public final class Image {
+public final class Image implements java.io.Serializable {
+
+    private static final long serialVersionUID = 1L;
 
     public final int width;
     public final int height;

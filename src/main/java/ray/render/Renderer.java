@@ -38,6 +38,10 @@ public final class Renderer {
     private RenderSummary summary;
     /** n_s and MaxDepth of the render in progress (its resolved settings). */
     private int ns = 1, maxDepth;
+    /** The pixels {@link #render()} renders: the whole image unless {@link #window} set a rectangle. */
+    private Area window;
+    /** The scene was prepared with the given plan already ({@link SplitRender}): render() leaves it as it is. */
+    private boolean prepared;
 
     public Renderer(Scene scene) {
         this.scene = scene;
@@ -105,6 +109,82 @@ public final class Renderer {
         return plan == null ? null : plan.settings();
     }
 
+    /**
+     * Renders only pixels [x0, x1) x [y0, y1): {@link #render()} then returns an image of that size whose
+     * pixels are bit for bit those of the whole image's render (each pixel depends only on the scene and
+     * its neighbourhood, never on the tiling). The adaptive sampler's error estimate needs the whole
+     * image and is left out ({@link SplitRender} measures it over the assembled pieces).
+     */
+    Renderer window(int x0, int y0, int x1, int y1) {
+        this.window = new Area(x0, y0, x1, y1);
+        return this;
+    }
+
+    /** Whether a {@link #window} was set. */
+    boolean windowed() {
+        return window != null;
+    }
+
+    /**
+     * The scene has been prepared with the {@link #plan(RenderPlan) given plan} already, by
+     * {@link SplitRender#prepare}: {@link #render()} does not prepare it again, so many window renders,
+     * from any threads, share one BVH.
+     */
+    Renderer prepared() {
+        this.prepared = true;
+        return this;
+    }
+
+    /** A rectangle of pixels [x0, x1) x [y0, y1). */
+    static final class Area {
+        final int x0, y0, x1, y1;
+
+        Area(int x0, int y0, int x1, int y1) {
+            if (x0 < 0 || y0 < 0 || x1 <= x0 || y1 <= y0) {
+                throw new IllegalArgumentException("empty or negative pixel rectangle [" + x0 + ", " + x1 + ") x [" + y0 + ", " + y1 + ")");
+            }
+            this.x0 = x0;
+            this.y0 = y0;
+            this.x1 = x1;
+            this.y1 = y1;
+        }
+
+        boolean same(Area a) {
+            return a.x0 == x0 && a.y0 == y0 && a.x1 == x1 && a.y1 == y1;
+        }
+
+        int width() {
+            return x1 - x0;
+        }
+
+        int height() {
+            return y1 - y0;
+        }
+
+        long pixels() {
+            return (long) width() * height();
+        }
+
+        /** This rectangle grown by {@code d} pixels on each side, clipped to a w x h image. */
+        Area grow(int d, int w, int h) {
+            return new Area(Math.max(0, x0 - d), Math.max(0, y0 - d), Math.min(w, x1 + d), Math.min(h, y1 + d));
+        }
+
+        boolean contains(Area a) {
+            return a.x0 >= x0 && a.y0 >= y0 && a.x1 <= x1 && a.y1 <= y1;
+        }
+    }
+
+    /** The pixels this render covers (the whole image unless a {@link #window} was set). */
+    Area area() {
+        Area whole = new Area(0, 0, scene.width, scene.height);
+        if (window != null && !whole.contains(window)) {
+            throw new IllegalArgumentException("pixel rectangle [" + window.x0 + ", " + window.x1 + ") x [" + window.y0 + ", " + window.y1
+                    + ") is not inside the " + scene.width + " x " + scene.height + " image");
+        }
+        return window != null ? window : whole;
+    }
+
     /** What the last {@link #render()} cost and its estimated error; null before the first render. */
     public RenderSummary summary() {
         return summary;
@@ -120,33 +200,36 @@ public final class Renderer {
         RenderSettings s = settings.resolve(scene);
         RenderPlan p = givenPlan != null && givenPlan.scene() == scene && givenPlan.settings().equals(s)
                 ? givenPlan : RenderPlan.derive(scene, s);
-        RenderEngine.prepare(scene, p);
+        if (!prepared || p != givenPlan) {
+            RenderEngine.prepare(scene, p);
+        }
         plan = p;
         ns = s.samples();
         maxDepth = s.maxDepth();
         Sampler sampler = Sampler.create(s.sampler(), ns, s.seed());
+        Area area = area();
         stats = new RayStats();
         Image image;
         Film film = null;
         ErrorProbe.Estimate estimate = ErrorProbe.Estimate.NONE;
         if (sampler instanceof GridSampler && !s.progressive()) {
-            image = renderGrid(sampler);
+            image = renderGrid(sampler, area);
         } else {
-            SampledRender r = new SampledRender(this, scene, sampler, s.targetError(), s.progressive());
+            SampledRender r = new SampledRender(this, scene, sampler, s.targetError(), s.progressive(), area);
             image = r.run();
             film = r.film();
             estimate = r.estimate();
         }
-        double spp = film == null ? ns * ns : (double) film.totalSamples() / ((double) scene.width * scene.height);
+        double spp = film == null ? ns * ns : (double) film.totalSamples() / (double) area.pixels();
         summary = new RenderSummary(sampler.name(), ns, (System.nanoTime() - t0) / 1e9, stats, spp,
                 estimate.rmse(), estimate.low(), estimate.high(), estimate.samplesPerPixel(), film);
         return image;
     }
 
     /** The scene format's grid, every pixel in one go: no film, today's exact arithmetic. */
-    private Image renderGrid(Sampler grid) {
-        int w = scene.width, h = scene.height;
-        Image image = new Image(w, h);
+    private Image renderGrid(Sampler grid, Area area) {
+        int w = scene.width, h = scene.height, ox = area.x0, oy = area.y0;
+        Image image = new Image(area.width(), area.height());
         // the regular grid's image-plane coordinates, once per sample column and row instead of per sample
         double[] planeA = new double[w * ns], planeB = new double[h * ns];
         for (int x = 0; x < w; x++) {
@@ -170,7 +253,7 @@ public final class Renderer {
                         for (int y = y0; y < y1; y++) {
                             for (int x = x0; x < x1; x++) {
                                 renderGridPixel(ctx, x, y, c, tableA, tableB, grid);
-                                image.set(x, y, c.x, c.y, c.z);
+                                image.set(x - ox, y - oy, c.x, c.y, c.z);
                             }
                         }
                     }
@@ -196,12 +279,15 @@ public final class Renderer {
      * Rethrows the first failure; throws {@link RenderCancelledException} when cancelled.
      */
     void runTiles(Image image, TileWork work) {
-        runTiles(image, work, true);
+        runTiles(image, work, true, area());
     }
 
-    /** {@link #runTiles(Image, TileWork)}, telling the listener about finished tiles only when {@code report}. */
-    void runTiles(Image image, TileWork work, boolean report) {
-        int w = scene.width, h = scene.height;
+    /**
+     * {@link #runTiles(Image, TileWork)} over the pixels of {@code area} (tile corners are image
+     * coordinates), telling the listener about finished tiles only when {@code report}.
+     */
+    void runTiles(Image image, TileWork work, boolean report, Area area) {
+        int w = area.width(), h = area.height(), ax = area.x0, ay = area.y0;
         final int size = tileSize(w, h, threads);
         int tilesX = (w + size - 1) / size, tilesY = (h + size - 1) / size, total = tilesX * tilesY;
         final long stride = spreadStride(total);
@@ -229,8 +315,8 @@ public final class Renderer {
                         TileWorker worker = work.worker(ctx);
                         for (int k; !cancelled && (k = next.getAndIncrement()) < total; ) {
                             int tile = (int) (k * stride % total);
-                            int x0 = (tile % tilesX) * size, y0 = (tile / tilesX) * size;
-                            int x1 = Math.min(w, x0 + size), y1 = Math.min(h, y0 + size);
+                            int x0 = ax + (tile % tilesX) * size, y0 = ay + (tile / tilesX) * size;
+                            int x1 = Math.min(ax + w, x0 + size), y1 = Math.min(ay + h, y0 + size);
                             worker.tile(x0, y0, x1, y1);
                             if (report) {
                                 listener.tileDone(image, x0, y0, x1, y1, done.incrementAndGet(), total);
@@ -312,6 +398,28 @@ public final class Renderer {
             b = t;
         }
         return a;
+    }
+
+    /** Runs {@code r} (passes of {@link #runTiles}) without adding its rays to {@link #stats()}. */
+    void uncounted(Runnable r) {
+        RayStats kept = stats;
+        stats = new RayStats();
+        try {
+            r.run();
+        } finally {
+            stats = kept;
+        }
+    }
+
+    /** Renders probes ({@link SplitRender#probe}) without a {@link #render()}: the MaxDepth its contexts follow. */
+    Renderer maxDepth(int d) {
+        this.maxDepth = d;
+        return this;
+    }
+
+    /** The rays counted so far by this render's passes (added to by each {@link #runTiles}). */
+    RayStats counted() {
+        return stats;
     }
 
     ProgressListener listener() {

@@ -24,23 +24,34 @@ final class SampledRender {
     private final Sampler sampler;
     private final double target;
     private final boolean progressive;
+    /** The pixels rendered (the whole image, or the renderer's window). */
+    private final Renderer.Area area;
+    /**
+     * The pixels the film and image hold: the area, and for the adaptive sampler a ring of one pixel
+     * around it (clipped to the image), whose first batch the area's edge pixels judge edges by.
+     */
+    private final Renderer.Area frame;
     private final Film film;
     private final Image image;
     private ErrorProbe.Estimate estimate = ErrorProbe.Estimate.NONE;
 
-    SampledRender(Renderer renderer, Scene scene, Sampler sampler, double targetError, boolean progressive) {
+    SampledRender(Renderer renderer, Scene scene, Sampler sampler, double targetError, boolean progressive, Renderer.Area area) {
         this.renderer = renderer;
         this.scene = scene;
         this.sampler = sampler;
         this.target = targetError;
         this.progressive = progressive;
-        this.film = new Film(scene.width, scene.height);
-        this.image = new Image(scene.width, scene.height);
+        this.area = area;
+        this.frame = sampler instanceof AdaptiveSampler ? area.grow(1, scene.width, scene.height) : area;
+        this.film = new Film(frame.width(), frame.height());
+        this.image = new Image(frame.width(), frame.height());
     }
 
+    /** The film of the area's pixels (the whole image's own, or a copy cut out of the frame). */
     Film film() {
-        return film;
+        return frame.same(area) ? film : film.crop(area.x0 - frame.x0, area.y0 - frame.y0, area.width(), area.height());
     }
+
 
     /** The adaptive render's measured estimate of its RMSE in 8-bit steps ({@code NONE} for the other samplers). */
     ErrorProbe.Estimate estimate() {
@@ -52,17 +63,54 @@ final class SampledRender {
         if (sampler instanceof AdaptiveSampler a) {
             // first every pixel's first batch (kept, to be reused), then each pixel refined on its own
             int b0 = a.firstBatch();
-            double[] first = new double[3 * b0 * scene.width * scene.height];
-            pass(new FirstBatch(a, first), 0, 2);
-            pass(new Adaptive(a, first, nudgedPixels()), 1, 2);
-            estimate = new ErrorProbe(this, renderer, scene, film, image).measure();
-            return image;
+            double[] first = new double[3 * b0 * film.width * film.height];
+            FirstBatch firstBatch = new FirstBatch(a, first);
+            pass(firstBatch, area, 0, 2);
+            ring(firstBatch);
+            pass(new Adaptive(a, first, nudgedPixels()), area, 1, 2);
+            if (!renderer.windowed()) {   // a window's estimate is measured over the assembled image (SplitRender)
+                estimate = new ErrorProbe(scene, film, image).measure(renderer);
+                return image;
+            }
+            return cropped();
         }
         int[] bounds = progressive ? passBounds(all) : new int[] {0, all};
         for (int p = 0; p + 1 < bounds.length; p++) {
-            pass(new Samples(bounds[p], bounds[p + 1]), p, bounds.length - 1);
+            pass(new Samples(bounds[p], bounds[p + 1]), area, p, bounds.length - 1);
         }
         return image;
+    }
+
+    /**
+     * The first batch of the frame's ring around the area (a window's render only): what the area's
+     * edge pixels compare themselves with. Its rays are not counted: the render that owns those pixels
+     * counts them.
+     */
+    private void ring(Renderer.TileWork firstBatch) {
+        if (frame.same(area)) {
+            return;
+        }
+        Renderer.Area[] sides = {
+            area.y0 > frame.y0 ? new Renderer.Area(frame.x0, frame.y0, frame.x1, area.y0) : null,
+            area.y1 < frame.y1 ? new Renderer.Area(frame.x0, area.y1, frame.x1, frame.y1) : null,
+            area.x0 > frame.x0 ? new Renderer.Area(frame.x0, area.y0, area.x0, area.y1) : null,
+            area.x1 < frame.x1 ? new Renderer.Area(area.x1, area.y0, frame.x1, area.y1) : null};
+        renderer.uncounted(() -> {
+            for (Renderer.Area side : sides) {
+                if (side != null) {
+                    renderer.runTiles(image, firstBatch, false, side);
+                }
+            }
+        });
+    }
+
+    /** The area's pixels out of the frame's image. */
+    private Image cropped() {
+        Image out = new Image(area.width(), area.height());
+        for (int y = 0; y < area.height(); y++) {
+            System.arraycopy(image.rgb, 3 * ((y + area.y0 - frame.y0) * image.width + area.x0 - frame.x0), out.rgb, 3 * y * out.width, 3 * out.width);
+        }
+        return out;
     }
 
     /**
@@ -73,7 +121,7 @@ final class SampledRender {
      * missed: a feature smaller than the gaps between four samples shows only this way).
      */
     private boolean[] nudgedPixels() {
-        int w = scene.width, h = scene.height;
+        int w = film.width, h = film.height;
         double[] busy = new double[w * h];
         boolean[] nudged = new boolean[w * h];
         double limit = target * target, edge = EDGE_STEPS / 255.0;
@@ -142,8 +190,8 @@ final class SampledRender {
         return b;
     }
 
-    private void pass(Renderer.TileWork work, int pass, int passes) {
-        renderer.runTiles(image, work);
+    private void pass(Renderer.TileWork work, Renderer.Area tiles, int pass, int passes) {
+        renderer.runTiles(image, work, true, tiles);
         if (progressive) {
             renderer.listener().passDone(image, pass, passes);
         }
@@ -154,11 +202,11 @@ final class SampledRender {
      * and replaced by black, so it never reaches a pixel.
      */
     void trace(TraceContext ctx, int x, int y, int index, Vector3d c) {
-        trace(ctx, sampler, x, y, index, c);
+        trace(scene, ctx, sampler, x, y, index, c);
     }
 
-    /** {@link #trace(TraceContext, int, int, int, Vector3d)} with another sampler. */
-    void trace(TraceContext ctx, Sampler sampler, int x, int y, int index, Vector3d c) {
+    /** {@link #trace(TraceContext, int, int, int, Vector3d)} in {@code scene} with another sampler. */
+    static void trace(Scene scene, TraceContext ctx, Sampler sampler, int x, int y, int index, Vector3d c) {
         ctx.sample.start(sampler, x, y, index);
         double dx = sampler.get(x, y, index, 0), dy = sampler.get(x, y, index, 1);
         Ray ray = ctx.ray(0);
@@ -188,7 +236,7 @@ final class SampledRender {
                     pixel(x, y);
                 }
             }
-            film.writeTo(image, x0, y0, x1, y1);
+            film.writeTo(image, x0 - frame.x0, y0 - frame.y0, x1 - frame.x0, y1 - frame.y0);
         }
     }
 
@@ -208,7 +256,7 @@ final class SampledRender {
                 void pixel(int x, int y) {
                     for (int s = from; s < to; s++) {
                         trace(ctx, x, y, s, c);
-                        film.add(x, y, c.x, c.y, c.z);
+                        film.add(x - frame.x0, y - frame.y0, c.x, c.y, c.z);
                     }
                 }
             };
@@ -231,13 +279,13 @@ final class SampledRender {
             return new FilmWorker(ctx) {
                 @Override
                 void pixel(int x, int y) {
-                    int base = 3 * b0 * (y * scene.width + x);
+                    int fx = x - frame.x0, fy = y - frame.y0, base = 3 * b0 * (fy * film.width + fx);
                     for (int k = 0; k < b0; k++) {
                         trace(ctx, x, y, a.order(k), c);
                         first[base + 3 * k] = c.x;
                         first[base + 3 * k + 1] = c.y;
                         first[base + 3 * k + 2] = c.z;
-                        film.add(x, y, c.x, c.y, c.z);
+                        film.add(fx, fy, c.x, c.y, c.z);
                     }
                 }
             };
@@ -262,7 +310,8 @@ final class SampledRender {
             return new FilmWorker(ctx) {
                 @Override
                 void pixel(int x, int y) {
-                    adaptive.render(x, y, film, first, nudged[y * scene.width + x]);
+                    int fx = x - frame.x0, fy = y - frame.y0;
+                    adaptive.render(x, y, film, fx, fy, first, nudged[fy * film.width + fx]);
                 }
             };
         }

@@ -52,7 +52,7 @@ public final class StudySettings {
      * Shrinks {@code scene} to at most {@code maxPixels} pixels, keeping its aspect ratio and its camera
      * (the camera's image-plane aspect is fixed to the scene's own before the size changes).
      */
-    static void fit(Scene scene, int maxPixels) {
+    public static void fit(Scene scene, int maxPixels) {
         long pixels = (long) scene.width * scene.height;
         if (pixels <= maxPixels) {
             return;

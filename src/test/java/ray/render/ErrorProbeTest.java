@@ -38,8 +38,7 @@ class ErrorProbeTest {
             Scene scene = scene();
             Renderer r = new Renderer(scene).threads(2).settings(new RenderSettings().sampler("adaptive").samples(ns).targetError(1));
             r.render();
-            SampledRender render = new SampledRender(r, scene, new AdaptiveSampler(ns), 1, false);
-            ErrorProbe.Estimate e = new ErrorProbe(render, r, scene, r.summary().film, converged).measure();
+            ErrorProbe.Estimate e = new ErrorProbe(scene, r.summary().film, converged).measure(r);
             assertTrue(e.rmse() < 0.06, "n_s=" + ns + ": estimated " + e.rmse() + " for an image " + truth + " off");
             assertTrue(e.low() <= truth && truth <= e.high(), "n_s=" + ns + ": interval " + e.low() + " to " + e.high() + ", truth " + truth);
         }
