@@ -27,12 +27,13 @@ import ray.render.Image;
  *     counts the pixels that differ from the reference's most common colour (its background); a passing image
  *     gets 1. It <b>passes</b> when at most {@code maxWrongShare} of its pixels are wrong, no tile is biased,
  *     and its mean FLIP error is at most {@code maxFlipMean}.</li>
- * <li><b>Where</b>: each wrong pixel is put in one class (a biased tile's: other; a whitish excess where the
- *     brighter image is less saturated: highlights; a value within the reference's 3 x 3 range where the
- *     reference varies (an edge or a steep gradient): edges, i.e. sampling; light taken
+ * <li><b>Where</b>: each wrong pixel is put in one class (a biased tile's: other; a value within the
+ *     reference's 3 x 3 range where the reference varies (an edge or a steep gradient): edges, i.e. sampling;
+ *     a whitish excess where the brighter image is less saturated: highlights; light taken
  *     away, the excess of the lit pixel's colour, with the lit colour found nearby in the darker image:
- *     shadows; else other); a connected area of wrong pixels takes one class (edges only when three quarters
- *     of it are). Half
+ *     shadows; else other); a connected area of wrong pixels takes one class: an area all brighter or all
+ *     darker is light added or taken away (highlight, shadow or other), never sampling; an area whose
+ *     differences go both ways is sampling (edges). Half
  *     the content wrong is the whole image; a class holding half the wrong pixels names the image; else
  *     regions.</li>
  * </ol>
@@ -45,6 +46,10 @@ public final class ImageJudge {
     static final double WHOLE_SHARE = 0.5;
     /** Tiles with fewer off-edge pixels than this are not tested for bias. */
     static final int MIN_TILE_PIXELS = 8;
+    /** An area of wrong pixels this large whose luminance differences mostly share a sign ... */
+    static final int COHERENT_PIXELS = 4;
+    /** ... (|sum| at least this share of sum of |d|) is light added or taken away, not sampling. */
+    static final double COHERENCE = 0.7;
     /** How far (pixels) the shadow rule looks for the lit colour. */
     static final int SHADOW_RADIUS = 24;
 
@@ -76,7 +81,7 @@ public final class ImageJudge {
             m.put("score", 0.0);
             return new Judgement(0, false, Difference.SIZE, String.format("FAIL: the image is %dx%d, the reference %dx%d",
                     candidate.width, candidate.height, reference.width, reference.height), m, candidate.width,
-                    candidate.height, new double[0], false);
+                    candidate.height, new double[0], new boolean[0], false);
         }
         return new Run(reference, candidate, policy).judge();
     }
@@ -188,7 +193,7 @@ public final class ImageJudge {
             if (!passed && flipMean > policy.maxFlipMean()) {
                 msg.append(String.format(" (FLIP above %.3g)", policy.maxFlipMean()));
             }
-            return new Judgement(score, passed, where, msg.toString(), m, w, h, diff, false);
+            return new Judgement(score, passed, where, msg.toString(), m, w, h, diff, wrong, false);
         }
 
         /**
@@ -318,9 +323,12 @@ public final class ImageJudge {
 
         /**
          * How many wrong pixels fall in each class (OTHER, EDGE, HIGHLIGHT, SHADOW). A connected area of wrong
-         * pixels (8-neighbours) takes one class for all its pixels: EDGE when at least three quarters of its
-         * pixels are EDGE, else the most common of the others (a missing shadow's boundary, in range like an
-         * anti-aliasing difference, belongs to the shadow).
+         * pixels (8-neighbours) takes one class for all its pixels. An area that is coherently brighter or
+         * darker (four pixels or more, |sum of luminance differences| >= 0.7 sum of their sizes) is light added
+         * or taken away: the most common of highlight, shadow and other, judged without the sampling rule (a
+         * broader highlight stays within the reference's local range, yet is no sampling difference). An area
+         * whose differences go both ways (jaggies along an edge, a far checkerboard breaking up into a
+         * pattern, a silhouette moved) is EDGE; so is an area of fewer than four pixels whose pixels mostly are.
          */
         int[] classify() {
             int[] k = new int[4];
@@ -333,10 +341,15 @@ public final class ImageJudge {
                 int head = 0, tail = 0;
                 queue[tail++] = start;
                 seen[start] = true;
-                int[] all = new int[4];
+                int[] all = new int[4], apart = new int[4];
+                double signed = 0, total = 0;
                 while (head < tail) {
                     int p = queue[head++];
-                    all[classOf(p)]++;
+                    all[classOf(p, true)]++;
+                    apart[classOf(p, false)]++;
+                    double d = luminance(c, p) - luminance(r, p);
+                    signed += d;
+                    total += Math.abs(d);
                     int x = p % w, y = p / w;
                     for (int j = Math.max(0, y - 1); j <= Math.min(h - 1, y + 1); j++) {
                         for (int i = Math.max(0, x - 1); i <= Math.min(w - 1, x + 1); i++) {
@@ -348,10 +361,19 @@ public final class ImageJudge {
                         }
                     }
                 }
+                // an area that is all brighter or all darker is light added or taken away; one whose differences
+                // go both ways (along an edge, in a pattern that aliases) is sampling
+                boolean coherent = tail >= COHERENT_PIXELS && Math.abs(signed) >= COHERENCE * total;
                 int best = EDGE;
-                if (4 * (tail - all[EDGE]) >= tail) {
+                if (coherent) {
                     best = OTHER;
                     for (int c2 = HIGHLIGHT; c2 <= SHADOW; c2++) {
+                        if (apart[c2] > apart[best]) {
+                            best = c2;
+                        }
+                    }
+                } else if (tail < COHERENT_PIXELS) {
+                    for (int c2 = 0; c2 < 4; c2++) {
                         if (all[c2] > all[best]) {
                             best = c2;
                         }
@@ -362,12 +384,29 @@ public final class ImageJudge {
             return k;
         }
 
-        /** One wrong pixel's class (see {@link ImageJudge}). */
-        int classOf(int p) {
+        /**
+         * One wrong pixel's class (see {@link ImageJudge}); {@code sampling}: a value within the reference's
+         * local range where the reference varies is EDGE (else only highlight, shadow or other).
+         */
+        int classOf(int p, boolean sampling) {
             if (byBias[p]) {
                 return OTHER;       // a region's systematic difference, however it looks pixel by pixel
             }
             double tol = policy.pixelTolerance();
+            // a value within the reference's local range where the reference varies (an edge, a steep gradient):
+            // anti-aliasing, sampling inside the pixel, or a silhouette's place
+            if (sampling) {
+                boolean inRange = true;
+                double range = 0;
+                for (int ch = 0; ch < 3; ch++) {
+                    int i = 3 * p + ch;
+                    inRange &= c[i] >= lo[i] - tol && c[i] <= hi[i] + tol;
+                    range = Math.max(range, hi[i] - lo[i]);
+                }
+                if (inRange && (edge[p] || range > 2 * tol)) {
+                    return EDGE;
+                }
+            }
             boolean candBrighter = luminance(c, p) >= luminance(r, p);
             double[] bright = candBrighter ? c : r, dark = candBrighter ? r : c;
             double[] e = new double[3];
@@ -384,18 +423,6 @@ public final class ImageJudge {
             if (eMax > tol && (eMin == Double.MAX_VALUE || eMin >= 0.5 * eMax)
                     && (saturation(bright, p) < saturation(dark, p) - 0.03 || saturation(dark, p) < 0.05 && lb > 200)) {
                 return HIGHLIGHT;
-            }
-            // a value within the reference's local range where the reference varies (an edge, a steep gradient):
-            // anti-aliasing, sampling inside the pixel, or a silhouette's place
-            boolean inRange = true;
-            double range = 0;
-            for (int ch = 0; ch < 3; ch++) {
-                int i = 3 * p + ch;
-                inRange &= c[i] >= lo[i] - tol && c[i] <= hi[i] + tol;
-                range = Math.max(range, hi[i] - lo[i]);
-            }
-            if (inRange && (edge[p] || range > 2 * tol)) {
-                return EDGE;
             }
             // shadow: light taken away: the excess has the brighter pixel's colour (a lit surface less its
             // ambient), and the brighter colour is found nearby in the darker image (the same surface, lit)

@@ -18,10 +18,11 @@ public final class Judgement {
     private final Map<String, Double> metrics;
     private final int width, height;
     private final double[] map;
+    private final boolean[] wrong;
     private final boolean flipScale;
 
     Judgement(double score, boolean passed, Difference where, String message, Map<String, Double> metrics,
-              int width, int height, double[] map, boolean flipScale) {
+              int width, int height, double[] map, boolean[] wrong, boolean flipScale) {
         this.score = score;
         this.passed = passed;
         this.where = where;
@@ -30,6 +31,7 @@ public final class Judgement {
         this.width = width;
         this.height = height;
         this.map = map;
+        this.wrong = wrong;
         this.flipScale = flipScale;
     }
 
@@ -82,6 +84,11 @@ public final class Judgement {
      */
     public double[] differenceMap() {
         return map.clone();
+    }
+
+    /** Which pixels were judged wrong, row by row (empty when the sizes differ). */
+    public boolean[] wrongPixels() {
+        return wrong.clone();
     }
 
     /** The heat map with its scale bar (magma; see {@link HeatMap}); a 1 x 1 black image when the sizes differ. */

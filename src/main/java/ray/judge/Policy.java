@@ -12,7 +12,9 @@ package ray.judge;
  *     {@code pixelTolerance}): another anti-aliasing pattern passes, jaggies or a moved silhouette do not
  * @param biasTile the side of the square tiles in which a systematic difference is looked for
  * @param biasSteps a tile is systematically off when its off-edge pixels differ on average by more than this
- *     many steps in a channel and a t-test says that mean is not noise
+ *     many steps in a channel and a t-test says that mean is not noise; more than one step, because two right
+ *     programs differ by exactly one step over a flat area whose exact value lies on a rounding boundary
+ *     (0.1 x 255 = 25.5: the mean of nine samples of 0.1 rounds to 25, one sample to 26)
  * @param biasAlpha the family-wise false-alarm rate of those t-tests (Sidak-corrected over tiles x channels)
  * @param maxWrongShare the image passes when at most this share of its pixels is wrong (and no tile is biased
  *     and FLIP stays below {@code maxFlipMean})
@@ -23,7 +25,7 @@ public record Policy(double pixelTolerance, double edgeContrast, double edgeShar
                      double biasAlpha, double maxWrongShare, double maxFlipMean, double pixelsPerDegree) {
 
     /** The defaults the grader and the student tests use. */
-    public static final Policy DEFAULT = new Policy(2, 16, 0.25, 8, 0.75, 1e-3, 0.001, 0.05, Flip.DEFAULT_PPD);
+    public static final Policy DEFAULT = new Policy(2, 16, 0.25, 8, 1.0, 1e-3, 0.001, 0.05, Flip.DEFAULT_PPD);
 
     public Policy {
         if (!(pixelTolerance >= 0) || !(edgeContrast >= 0) || !(edgeShare >= 0) || biasTile < 2 || !(biasSteps >= 0)

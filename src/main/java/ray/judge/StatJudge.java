@@ -32,7 +32,7 @@ public final class StatJudge {
             Map<String, Double> m = new LinkedHashMap<>();
             m.put("score", 0.0);
             return new Judgement(0, false, Difference.SIZE, String.format("FAIL: the image is %dx%d, the reference %dx%d",
-                    candidate.width, candidate.height, w, h), m, candidate.width, candidate.height, new double[0], false);
+                    candidate.width, candidate.height, w, h), m, candidate.width, candidate.height, new double[0], new boolean[0], false);
         }
         int rs = policy.region(), rx = (w + rs - 1) / rs, ry = (h + rs - 1) / rs;
         int tests = 3 * (w * h + (rs > 1 ? rx * ry : 0));
@@ -104,7 +104,7 @@ public final class StatJudge {
                         + " level %.3g (alpha %.3g over %d tests, differences above %.2g steps); smallest p = %.3g; %s; credit %.0f%%",
                 passed ? "PASS" : "FAIL", pixelRejections, w * h, regionRejections, rs > 1 ? rx * ry : 0, level,
                 policy.alpha(), tests, policy.minSteps(), smallest, where.summary(), 100 * score);
-        return new Judgement(score, passed, where, msg, m, w, h, map, false);
+        return new Judgement(score, passed, where, msg, m, w, h, map, wrong, false);
     }
 
     private static double tStat(StatTest.Estimate a, StatTest.Estimate b) {

@@ -115,6 +115,28 @@ class ImageJudgeTest {
         assertEquals(Difference.WHOLE_IMAGE, j.where());
     }
 
+    /**
+     * The scenes' own AASamples 3 and AASamples 1 images: the second aliases (jaggies, a far checkerboard
+     * breaking up) and fails with EDGES; its sky, exactly one step brighter everywhere because 0.1 x 255 =
+     * 25.5 lies on a rounding boundary (nine samples of 0.1 sum to just under 0.9), is not held against it.
+     */
+    @Test
+    void theAntialiasScenesDifferAtEdgesAndTheSkysRoundingTieIsNoBias() throws Exception {
+        Image three = Images.read(java.nio.file.Path.of("reference-images/antialias-3.png"));
+        Image one = Images.read(java.nio.file.Path.of("reference-images/antialias-1.png"));
+        Judgement j = ImageJudge.judge(three, one);
+        System.out.println("antialias-1 against antialias-3: " + j.message());
+        assertFalse(j.passed());
+        assertEquals(Difference.EDGES, j.where(), j.message());
+        boolean[] wrong = j.wrongPixels();
+        for (int x = 0; x < three.width; x++) {
+            assertEquals(1, Math.abs(Image.toByte(one.get(x, 5).z) - Image.toByte(three.get(x, 5).z)), "the sky differs by one step");
+            for (int y = 0; y < 20; y++) {
+                assertFalse(wrong[y * three.width + x], "sky pixel (" + x + ", " + y + ") judged wrong");
+            }
+        }
+    }
+
     @Test
     void anotherSizeFailsWithSize() {
         Judgement j = ImageJudge.judge(reference, new Image(10, 10));
