@@ -108,6 +108,12 @@ public class Mesh extends Surface {
         return triangles.length / 3;
     }
 
+    /** One primitive per triangle. */
+    @Override
+    public long primitiveCount() {
+        return triangleCount();
+    }
+
     /** Corner {@code k} (0..2) of triangle {@code t}, into {@code out}. */
     public void corner(int t, int k, javax.vecmath.Vector3d out) {
         out.set(coordinate(t, k, 0), coordinate(t, k, 1), coordinate(t, k, 2));

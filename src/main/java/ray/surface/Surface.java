@@ -56,6 +56,14 @@ public abstract class Surface implements SceneObject {
     }
 
     /**
+     * How many primitives {@link #collectPrimitives} adds (1 by default), for the render plan's geometry
+     * line; a surface of many parts that overrides one overrides both.
+     */
+    public long primitiveCount() {
+        return 1;
+    }
+
+    /**
      * The packed type the BVH holds this surface in, for a fast path with its own kernel
      * ({@link ray.accel.PrimitiveSet}); null (the default): the BVH calls {@link #intersects}, which is
      * all a new primitive needs. Return a type only for your exact class

@@ -55,7 +55,7 @@ class GeometryTest {
     @Test
     void aMeshSceneNamesItsTriangles() throws Exception {
         String g = geometry(Parser.parse(Path.of("scenes/mesh.txt")));
-        assertTrue(g.matches(".*\\d+ Mesh \\([\\d,]+ triangles\\).*"), g);
+        assertTrue(g.matches(".*\\d+ Mesh \\([\\d,]+ primitives\\).*"), g);
     }
 
     @Test
