@@ -165,7 +165,7 @@ public final class Reports {
                     t.images().metrics().forEach((k, v) -> b.append("<tr><td>").append(h(k)).append("</td><td>").append(num(v))
                             .append("</td></tr>"));
                     b.append("<tr><td>where</td><td>").append(h(t.images().kind())).append("</td></tr>");
-                    b.append("<tr><td>render time</td><td>").append(num(t.seconds())).append(" s</td></tr></table>");
+                    b.append("<tr><td>render time</td><td>").append(secs(t.seconds())).append("</td></tr></table>");
                 }
                 b.append("</div></td></tr>\n");
             }
@@ -176,8 +176,8 @@ public final class Reports {
         if (!r.console().isBlank()) {
             b.append("<h2>Printed outside the tests</h2><pre>").append(h(r.console())).append("</pre>\n");
         }
-        b.append("<p class=small>Graded in ").append(num(r.seconds())).append(" s; your scenes rendered in ").append(num(r.renderSeconds()))
-                .append(" s. Ran in: ").append(h(r.sandbox())).append(".</p>\n</body></html>\n");
+        b.append("<p class=small>Graded in ").append(secs(r.seconds())).append("; your scenes rendered in ").append(secs(r.renderSeconds()))
+                .append(". Ran in: ").append(h(r.sandbox())).append(".</p>\n</body></html>\n");
         return b.toString();
     }
 
@@ -227,10 +227,11 @@ public final class Reports {
         double max = set.maxScore();
         b.append("<h1>").append(results.size()).append(" submission").append(results.size() == 1 ? "" : "s").append("</h1>\n");
         double mean = results.stream().mapToDouble(SubmissionResult::score).average().orElse(0);
-        b.append("<p>Mean ").append(num(mean)).append(" of ").append(num(max)).append(". Graded in ").append(num(wallSeconds))
-                .append(" s with ").append(parallel).append(" at a time (").append(results.isEmpty() ? "-" : num(
+        b.append("<p>Mean ").append(num(Grader.round(mean))).append(" of ").append(num(max)).append(". Graded in ").append(secs(wallSeconds))
+                .append(" with ").append(parallel).append(" at a time (").append(results.isEmpty() ? "-" : secs(wallSeconds / results.size()))
+                .append(" per submission; each took ").append(results.isEmpty() ? "-" : secs(
                         results.stream().mapToDouble(SubmissionResult::seconds).sum() / results.size()))
-                .append(" s per submission). Student code ran in: ").append(h(sandbox)).append(".</p>\n");
+                .append(" on average). Student code ran in: ").append(h(sandbox)).append(".</p>\n");
         // histogram: ten bins of the maximum
         int[] bins = new int[10];
         for (SubmissionResult r : results) {
@@ -265,12 +266,15 @@ public final class Reports {
             b.append("<tr><td>").append(e.getValue()).append(" (").append(Math.round(100.0 * e.getValue() / results.size()))
                     .append("%)</td><td>").append(h(e.getKey())).append("</td></tr>\n");
         }
+        if (common.isEmpty()) {
+            b.append("<tr><td colspan=2>none: every test passed</td></tr>\n");
+        }
         b.append("</table>\n");
         List<SubmissionResult> slow = new ArrayList<>(results);
         slow.sort(Comparator.comparingDouble(SubmissionResult::renderSeconds).reversed());
         b.append("<h2>Slowest submissions</h2>\n<table><tr><th>render time</th><th>graded in</th><th>submission</th><th>score</th></tr>\n");
         for (SubmissionResult r : slow.subList(0, Math.min(10, slow.size()))) {
-            b.append("<tr><td>").append(num(r.renderSeconds())).append(" s</td><td>").append(num(r.seconds())).append(" s</td><td><a href=\"")
+            b.append("<tr><td>").append(secs(r.renderSeconds())).append("</td><td>").append(secs(r.seconds())).append("</td><td><a href=\"")
                     .append(h(r.name())).append("/index.html\">").append(h(r.name())).append("</a></td><td>").append(num(r.score()))
                     .append("</td></tr>\n");
         }
@@ -327,6 +331,11 @@ public final class Reports {
         }
         String s = String.format(Locale.ROOT, "%.3f", v).replaceAll("0+$", "");
         return s.endsWith(".") ? s.substring(0, s.length() - 1) : s;
+    }
+
+    /** Seconds to a tenth: "12.3 s". */
+    static String secs(double seconds) {
+        return String.format(Locale.ROOT, "%.1f s", seconds);
     }
 
     private static String csv(String s) {
