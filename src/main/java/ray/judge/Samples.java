@@ -59,7 +59,15 @@ public final class Samples {
         return new Samples(w, h, m, v, d);
     }
 
-    /** Independent renders of one scene (at least two, same size, e.g. other sampler seeds): their mean and spread per pixel. */
+    /** The variance of rounding to 8 bits: a uniform error of +-half a step, (1/255)^2 / 12. */
+    public static final double ROUNDING_VARIANCE = 1.0 / (255.0 * 255.0 * 12);
+
+    /**
+     * Independent renders of one scene (at least two, same size, e.g. other sampler seeds): their mean and
+     * spread per pixel. Renders are taken to be 8-bit images: each value carries a rounding error of variance
+     * {@link #ROUNDING_VARIANCE}, added to the measured spread, so that a few renders which happen to agree to
+     * the step (their measured variance 0) do not make a one- or two-step difference look certain.
+     */
     public static Samples of(List<Image> renders) {
         int k = renders.size();
         if (k < 2) {
@@ -80,6 +88,9 @@ public final class Samples {
                 double e = Flip.clamp(img.rgb[i]) - m[i];
                 v[i] += e * e / ((k - 1.0) * k);
             }
+        }
+        for (int i = 0; i < v.length; i++) {
+            v[i] += ROUNDING_VARIANCE / k;
         }
         java.util.Arrays.fill(d, k - 1);
         return new Samples(w, h, m, v, d);

@@ -170,6 +170,31 @@ class EngineStatisticsTest {
         assertTrue(wrong.metric("region_rejections") > 0, wrong.message());
     }
 
+    /**
+     * The grader's path: several independent 8-bit renders (other seeds, rounded as the PNG holds them) of the
+     * reference and of the candidate. Another program's right renders pass; 5% more light fails.
+     */
+    @Test
+    void statJudgeOnIndependentEightBitRenders() throws Exception {
+        Samples reference = renders(areaScene(I), 20), other = renders(areaScene(I), 30), stronger = renders(areaScene(1.05 * I), 40);
+        Judgement same = StatJudge.judge(reference, other), wrong = StatJudge.judge(reference, stronger);
+        System.out.println("8-bit renders, other seeds: " + same.message());
+        System.out.println("8-bit renders, 5% stronger light: " + wrong.message());
+        assertTrue(same.passed(), same.message());
+        assertFalse(wrong.passed(), wrong.message());
+    }
+
+    /** Four renders with seeds from {@code seed}, each rounded to 8 bits. */
+    static Samples renders(String text, int seed) throws Exception {
+        java.util.List<ray.render.Image> out = new ArrayList<>();
+        for (int k = 0; k < 4; k++) {
+            Scene scene = Parser.parse(text, "area.txt", new ArrayList<>());
+            out.add(Images.quantised(new Renderer(scene).threads(2)
+                    .settings(new RenderSettings().sampler("jittered").seed(seed + k)).render()));
+        }
+        return Samples.of(out);
+    }
+
     static Samples film(String text, int seed) throws Exception {
         Scene scene = Parser.parse(text, "area.txt", new ArrayList<>());
         Renderer r = new Renderer(scene).threads(2).settings(new RenderSettings().sampler("jittered").seed(seed));
