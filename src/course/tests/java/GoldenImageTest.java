@@ -88,7 +88,7 @@ class GoldenImageTest {
         }
         BufferedImage yours = RayTracer.toImage(image);
         BufferedImage reference = ImageIO.read(new File(references(), name + ".png"));
-        String verdict = compare(reference, yours);
+        String verdict = compare(reference, yours, scene);
         if (verdict != null) {
             File out = new File(output(), name + ".png");
             writeSideBySide(reference, yours, out);
@@ -96,10 +96,15 @@ class GoldenImageTest {
         }
     }
 
-    /** Null when the images match under the tolerance above; otherwise what kind of difference it is. */
-    static String compare(BufferedImage ref, BufferedImage yours) {
+    /**
+     * Null when the images match under the tolerance above; otherwise what kind of difference it is. To tell
+     * highlights, the differing pixels are rendered again with your code and every BlinnPhong's specular
+     * colour set to black: where either image is brighter than that, it has a highlight.
+     */
+    static String compare(BufferedImage ref, BufferedImage yours, Scene scene) {
         int w = ref.getWidth(), h = ref.getHeight();
         int pixels = w * h;
+        Highlights highlights = new Highlights(scene);
         int bad = 0, badEdge = 0, badOffEdge = 0, brighter = 0, darker = 0, badHighlight = 0, worst = 0;
         for (int y = 0; y < h; y++) {
             for (int x = 0; x < w; x++) {
@@ -120,7 +125,7 @@ class GoldenImageTest {
                 } else {
                     darker++;
                 }
-                if (maxChannel(a) > 235 || maxChannel(b) > 235) {
+                if (highlights.at(x, y, a, b)) {
                     badHighlight++;
                 }
             }
@@ -150,6 +155,55 @@ class GoldenImageTest {
         return counts + ": " + kind;
     }
 
+    /** Where a scene has highlights: your render of a pixel with every BlinnPhong's specular colour black. */
+    static final class Highlights {
+        private final Scene scene;
+        private final java.util.List<BlinnPhong> shiny = new ArrayList<>();
+
+        Highlights(Scene scene) {
+            this.scene = scene;
+            if (scene != null) {
+                for (Material m : scene.materials) {
+                    if (m instanceof BlinnPhong && ((BlinnPhong) m).specularColor != null && ((BlinnPhong) m).specularColor.length() > 0) {
+                        shiny.add((BlinnPhong) m);
+                    }
+                }
+            }
+        }
+
+        /** True when the reference pixel {@code a} or yours {@code b} is brighter than pixel (x, y) without highlights. */
+        boolean at(int x, int y, int a, int b) {
+            if (shiny.isEmpty()) {
+                return false;
+            }
+            Vector3d[] saved = new Vector3d[shiny.size()];
+            for (int i = 0; i < saved.length; i++) {
+                saved[i] = shiny.get(i).specularColor;
+                shiny.get(i).specularColor = new Vector3d();
+            }
+            try {
+                int plain = RayTracer.rgb(scene.renderPixel(x, y));
+                return brighter(a, plain) || brighter(b, plain);
+            } catch (RuntimeException e) {
+                return false;
+            } finally {
+                for (int i = 0; i < saved.length; i++) {
+                    shiny.get(i).specularColor = saved[i];
+                }
+            }
+        }
+    }
+
+    /** True when a channel of {@code a} is above {@code b}'s by more than the tolerance. */
+    static boolean brighter(int a, int b) {
+        for (int shift = 0; shift <= 16; shift += 8) {
+            if (((a >> shift) & 255) > ((b >> shift) & 255) + TOLERANCE) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     static boolean isEdge(BufferedImage ref, int x, int y) {
         int c = ref.getRGB(x, y);
         for (int dy = -1; dy <= 1; dy++) {
@@ -170,10 +224,6 @@ class GoldenImageTest {
             d = Math.max(d, Math.abs(((a >> s) & 255) - ((b >> s) & 255)));
         }
         return d;
-    }
-
-    static int maxChannel(int c) {
-        return Math.max((c >> 16) & 255, Math.max((c >> 8) & 255, c & 255));
     }
 
     static double luminance(int c) {
