@@ -1,7 +1,6 @@
 package ray.grade;
 
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 
 /** A small JSON writer for the grader's reports: maps, lists, strings, numbers, booleans and null, indented. */
@@ -24,14 +23,7 @@ final class Json {
         } else if (v instanceof Boolean) {
             b.append(v);
         } else if (v instanceof Number n) {
-            double d = n.doubleValue();
-            if (!Double.isFinite(d)) {
-                b.append("null");
-            } else if (d == Math.rint(d) && Math.abs(d) < 1e15) {
-                b.append((long) d);
-            } else {
-                b.append(String.format(Locale.ROOT, "%s", Double.toString(d)));
-            }
+            b.append(ray.plan.JsonLine.number(n.doubleValue()));
         } else if (v instanceof Map<?, ?> m) {
             if (m.isEmpty()) {
                 b.append("{}");
@@ -65,24 +57,6 @@ final class Json {
     }
 
     private static void string(StringBuilder b, String s) {
-        b.append('"');
-        for (int i = 0; i < s.length(); i++) {
-            char c = s.charAt(i);
-            switch (c) {
-                case '"' -> b.append("\\\"");
-                case '\\' -> b.append("\\\\");
-                case '\n' -> b.append("\\n");
-                case '\r' -> b.append("\\r");
-                case '\t' -> b.append("\\t");
-                default -> {
-                    if (c < 0x20 || c == 0x2028 || c == 0x2029) {
-                        b.append(String.format(Locale.ROOT, "\\u%04x", (int) c));
-                    } else {
-                        b.append(c);
-                    }
-                }
-            }
-        }
-        b.append('"');
+        ray.plan.JsonLine.quote(b, s);
     }
 }

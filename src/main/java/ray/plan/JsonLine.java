@@ -75,7 +75,7 @@ public final class JsonLine {
     }
 
     /** {@code v} as a JSON number: an integer where it is one (below 2^53), null where not finite. */
-    static String number(double v) {
+    public static String number(double v) {
         if (!Double.isFinite(v)) {
             return "null";
         }
@@ -86,6 +86,11 @@ public final class JsonLine {
     }
 
     private void string(String s) {
+        quote(b, s);
+    }
+
+    /** {@code s} as a JSON string (quoted, escaped) appended to {@code b}; also ray.grade's reports. */
+    public static void quote(StringBuilder b, String s) {
         b.append('"');
         for (int i = 0; i < s.length(); i++) {
             char c = s.charAt(i);
