@@ -212,7 +212,8 @@ public final class Bench {
                 }
                 if (!missing.isEmpty()) {
                     out.println("- peer " + Peers.NAMES.get(p) + ": not installed or not translated in " + benchDir
-                            + " for " + String.join(", ", missing) + " (bash peers/run_peers.sh install scenes translate;"
+                            + " for " + String.join(", ", missing) + " (in the bench directory: bash peers/run_peers.sh install scenes,"
+                            + " then SCENES='classic mirrors spheres10k mesh100k classichd' bash peers/run_peers.sh translate;"
                             + " mesh1m has an area light, which the translator does not know), left out there");
                 }
             }
