@@ -215,6 +215,16 @@ public class Scene {
      * to the sample's position, or to infinity along its direction for a light infinitely far away.
      */
     public boolean occluded(IntersectionRecord record, LightSample sample, TraceContext ctx) {
+        return occluded(record, sample, ctx, -1);
+    }
+
+    /**
+     * The shadow query for one of the samples of light number {@code light} (its index among the lights
+     * a material shades; another number, -1 say: none): the accelerator first tests whatever stopped
+     * this thread's last shadowed ray toward that light ({@link Accelerator#anyHit(Ray, TraceContext, int)},
+     * the occluder cache). The answer is the same as without it.
+     */
+    public boolean occluded(IntersectionRecord record, LightSample sample, TraceContext ctx, int light) {
         Ray s = ctx.shadowRay;
         if (sample.distance == Double.POSITIVE_INFINITY) {
             Vector3d d = sample.direction;
@@ -224,6 +234,6 @@ public class Scene {
             record.spawnRayTo(p.x, p.y, p.z, s);
         }
         ctx.stats.count(RayKind.SHADOW);
-        return accelerator().anyHit(s, ctx);
+        return accelerator().anyHit(s, ctx, light);
     }
 }

@@ -95,7 +95,8 @@ public class Diffuse extends Material {
         LightSample s = ctx.lightSample;
         Vector3d kd = diffuseColorAt(rec, ctx.reflectance);   // k_d here: the field, or a texture's value
         Vector3d ks = specularColorOrNull();   // null: no highlight term at all (plain Diffuse)
-        for (Light light : ls) {
+        for (int k = 0; k < ls.length; k++) {   // k: the occluder cache's slot for this light's shadow rays
+            Light light = ls[k];
             for (int i = 0, count = light.sampleCount(); i < count; i++) {
                 if (!light.sample(rec, scene, i, s)) {
                     continue;
@@ -103,7 +104,7 @@ public class Diffuse extends Material {
                 Vector3d l = s.direction;
                 double nl = n.x * l.x + n.y * l.y + n.z * l.z;
                 // the light is behind the surface: no contribution, no shadow ray
-                if (!(nl > 0) || (!s.shadowTested && scene.occluded(rec, s, ctx))) {
+                if (!(nl > 0) || (!s.shadowTested && scene.occluded(rec, s, ctx, k))) {
                     continue;
                 }
                 Vector3d li = s.intensity;
