@@ -49,14 +49,26 @@ public class Camera implements SceneObject {
     /** Computes u, v, w and the image-plane size from eye, target, up, yFOV and aspect. */
     public void recalculate() {
         double wx = eye.x - target.x, wy = eye.y - target.y, wz = eye.z - target.z;
-        double wl = Math.sqrt(wx * wx + wy * wy + wz * wz);
-        if (!(wl > 0) || !Double.isFinite(wl)) {
+        // lengths scaled by the largest component first: an eye at [1e308 1e308 1e308] is far, not "the same point"
+        double wm = Math.max(Math.abs(wx), Math.max(Math.abs(wy), Math.abs(wz)));
+        if (!Double.isFinite(wm)) {
+            throw new IllegalArgumentException("camera eye " + eye + " and target " + target + " are too far apart: their difference "
+                    + "overflows a double (expected coordinates within about +-8.9e307)");
+        }
+        if (!(wm > 0)) {
             throw new IllegalArgumentException("camera eye and target are the same point " + eye + "; the view direction is undefined");
         }
+        wx /= wm;
+        wy /= wm;
+        wz /= wm;
+        double wl = Math.sqrt(wx * wx + wy * wy + wz * wz);
         w.set(wx / wl, wy / wl, wz / wl);
-        double ux = up.y * w.z - up.z * w.y, uy = up.z * w.x - up.x * w.z, uz = up.x * w.y - up.y * w.x;
+        double um = Math.max(Math.abs(up.x), Math.max(Math.abs(up.y), Math.abs(up.z)));
+        double sx = um > 0 && Double.isFinite(um) ? up.x / um : up.x, sy = um > 0 && Double.isFinite(um) ? up.y / um : up.y,
+                sz = um > 0 && Double.isFinite(um) ? up.z / um : up.z;
+        double ux = sy * w.z - sz * w.y, uy = sz * w.x - sx * w.z, uz = sx * w.y - sy * w.x;
         double ul = Math.sqrt(ux * ux + uy * uy + uz * uz);
-        double upl = Math.sqrt(up.x * up.x + up.y * up.y + up.z * up.z);
+        double upl = Math.sqrt(sx * sx + sy * sy + sz * sz);
         if (!(ul > 1e-12 * upl)) {
             throw new IllegalArgumentException("camera up " + up + " is zero or parallel to the view direction (eye - target)");
         }

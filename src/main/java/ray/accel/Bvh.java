@@ -190,6 +190,10 @@ public final class Bvh implements Accelerator {
                 continue;
             }
             Aabb a = typeOf(s).bounds(s, scratch);   // a built-in type writes it into scratch: no box per primitive
+            if (a == null) {     // a user's bounds() returning null: blamed on it, not on the BVH's build
+                throw new IllegalStateException(s.getClass().getSimpleName() + ".bounds() returned null (expected a box around "
+                        + "the surface, or not to override bounds() for a surface without one)");
+            }
             if (a.isFinite()) {
                 int i = bounded.size();
                 box[6 * i] = a.minX; box[6 * i + 1] = a.minY; box[6 * i + 2] = a.minZ;

@@ -2,7 +2,7 @@ package ray.app;
 
 import java.io.PrintStream;
 import java.util.Map;
-import ray.render.PngWriter;
+import ray.io.OutputFile;
 
 /**
  * The shutdown hook of the {@code raytracer} process. It knows which scene is being read or rendered;
@@ -17,8 +17,12 @@ final class ExitGuard extends Thread {
     static final int USER_EXIT_STATUS = 1;
 
     private static volatile String scene;
+    /** The last scene worked on, for an exit between two scenes. */
+    private static volatile String lastScene;
     private static volatile ProgressLine progress;
     private static volatile boolean installed;
+    /** While the command runs (every mode but the open viewer): any System.exit then is not ours. */
+    private static volatile boolean active;
     private final PrintStream err;
 
     private ExitGuard(PrintStream err) {
@@ -38,6 +42,16 @@ final class ExitGuard extends Thread {
     static void working(String sceneName, ProgressLine line) {
         progress = line;
         scene = sceneName;
+        lastScene = sceneName;
+    }
+
+    /**
+     * Whether the command is running: from the start of {@link Main#runProcess} until it returns its
+     * status (render, --plan, --study alike). A System.exit in that time, from any thread (a user's
+     * class, or a thread it started, even between two scenes), ends the run with status 1 and a line.
+     */
+    static void active(boolean on) {
+        active = on;
     }
 
     static void idle() {
@@ -52,16 +66,19 @@ final class ExitGuard extends Thread {
             p.clear();
         }
         String s = scene;
-        if (s == null) {
+        if (s == null && !active) {
             return;
         }
         String caller = exitCaller();
         if (caller == null) {
-            return;         // a signal (Ctrl+C): the JVM's own status (130) says so; PngWriter's hook cleans up
+            return;         // a signal (Ctrl+C): the JVM's own status (130) says so; OutputFile's hook cleans up
         }
-        PngWriter.deletePendingTemporaries();
-        err.println(Main.oneLine(s + ": " + caller + " called System.exit while the scene was being "
-                + "rendered; the program stopped there and no image was written"));
+        OutputFile.deletePendingTemporaries();
+        String last = lastScene;
+        err.println(Main.oneLine(s != null ? s + ": " + caller + " called System.exit while the scene was being "
+                + "rendered; the program stopped there and no image was written"
+                : "raytracer: " + caller + " called System.exit" + (last != null ? " after " + last : "")
+                        + "; the program stopped there and the scenes after it were not done"));
         err.flush();
         Runtime.getRuntime().halt(USER_EXIT_STATUS);
     }

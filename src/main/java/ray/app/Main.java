@@ -10,12 +10,12 @@ import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
+import ray.Failures;
 import ray.Scene;
 import ray.accel.Bvh;
 import ray.parse.Parser;
 import ray.parse.SceneFormatException;
 import ray.render.Image;
-import ray.render.PngWriter;
 import ray.render.Renderer;
 import ray.settings.RenderSettings;
 
@@ -71,6 +71,9 @@ public final class Main implements Callable<Integer> {
 
     @Option(names = "--view", description = "open the viewer on the (first) scene instead of writing a PNG")
     boolean view;
+
+    /** Most render threads: more only cost memory and start-up (each a thread of its own, with its stack). */
+    static final int MAX_THREADS = 1024;
 
     /** What {@link #run} returns when the viewer was opened: the JVM must keep running (no System.exit). */
     public static final int VIEWER_OPEN = -1;
@@ -142,8 +145,15 @@ public final class Main implements Callable<Integer> {
      * calls System.exit while its scene renders cannot end the run with a success status.
      */
     public static int runProcess(String... args) {
+        // Standard output carries only the image (-o -, the scene '-') or JSON Lines: what a user's class
+        // prints there (System.out.println, the usual debug line in shade()) goes to stderr instead.
+        PrintStream stdout = System.out;
+        System.setOut(new PrintStream(new java.io.FileOutputStream(java.io.FileDescriptor.err), true));
         ExitGuard.install(System.err);
-        return run(args);
+        ExitGuard.active(true);
+        int status = run(System.in, stdout, System.err, args);
+        ExitGuard.active(false);     // the status is ours now (RayTracer.main exits with it), as is the viewer's own exit
+        return status;
     }
 
     /**
@@ -239,8 +249,8 @@ public final class Main implements Callable<Integer> {
                 return 2;
             }
         }
-        if (threads < 1) {
-            err.println("raytracer: --threads must be at least 1");
+        if (threads < 1 || threads > MAX_THREADS) {
+            err.println("raytracer: --threads must be 1 to " + MAX_THREADS + ", got " + threads);
             return 2;
         }
         if (sampling.problem() != null) {
@@ -251,16 +261,24 @@ public final class Main implements Callable<Integer> {
             err.println("raytracer: --json goes with --plan or --stats");
             return 2;
         }
+        String conflict = conflict();
+        if (conflict == null) {
+            conflict = sceneProblem();
+        }
+        if (conflict != null) {
+            err.println(oneLine("raytracer: " + conflict));
+            return 2;
+        }
         if (plan) {
-            return PlanCommand.run(scenes, json, renderSettings(), out, err);
+            return outputChecked(PlanCommand.run(scenes, json, renderSettings(), in, out, err));
         }
         if (study) {
             if (scenes.isEmpty() || output != null) {
                 err.println("raytracer: --study takes scene files and no --output (see --help)");
                 return 2;
             }
-            return ray.study.Study.run(scenes, quick, fullSize, reportDir != null ? reportDir : Path.of("build", "reports", "accuracy"),
-                    threads, out, err, !this.quiet && err == System.err && Terminal.stderr());
+            return outputChecked(ray.study.Study.run(scenes, quick, fullSize, reportDir != null ? reportDir : Path.of("build", "reports", "accuracy"),
+                    threads, in, out, err, !this.quiet && err == System.err && Terminal.stderr()));
         }
         if (scenes.isEmpty() || view) {
             return openViewer();
@@ -284,7 +302,98 @@ public final class Main implements Callable<Integer> {
                 failed++;
             }
         }
-        return failed == 0 ? 0 : 1;
+        return outputChecked(failed == 0 ? 0 : 1);
+    }
+
+    /**
+     * {@code status}, or 1 with a line when standard output lost what was written to it (a full disk,
+     * {@code >/dev/full}, a closed pipe): the summary lines, --stats, --json, --plan and --study output
+     * are the run's result, and losing them is a failure.
+     */
+    private int outputChecked(int status) {
+        out.flush();
+        if (out.checkError()) {
+            err.println("raytracer: cannot write to standard output (closed, or the disk is full); its output is lost");
+            return Math.max(status, 1);
+        }
+        return status;
+    }
+
+    /**
+     * An option that would do nothing with the others given (refused, status 2, rather than silently
+     * ignored), or null.
+     */
+    String conflict() {
+        if (outputArg != null && outputArg.isEmpty()) {
+            return "--output is empty (expected a file, an existing folder or '-')";
+        }
+        if (plan && study) {
+            return "--plan and --study are different runs; give one of them";
+        }
+        String mode = plan ? "--plan" : study ? "--study" : null;
+        if (mode != null && view) {
+            return "--view does nothing with " + mode;
+        }
+        if (mode != null && stats) {
+            return "--stats reports a render; it does nothing with " + mode;
+        }
+        if (plan && outputArg != null) {
+            return "--output does nothing with --plan (nothing is rendered)";
+        }
+        if (plan && allowLong) {
+            return "--allow-long does nothing with --plan (nothing is rendered)";
+        }
+        if (!study && (quick || fullSize || reportDir != null)) {
+            return (quick ? "--quick" : fullSize ? "--full-size" : "--report-dir") + " goes with --study";
+        }
+        if (study && (sampling.sampler != null || sampling.samples != null || sampling.targetError != null || sampling.maxDepth != null
+                || cutFaint || allowLong)) {
+            return "--sampler, --samples, --target-error, --max-depth, --cut-faint and --allow-long do nothing with --study "
+                    + "(it renders every sampler at every setting itself)";
+        }
+        if (view && outputArg != null) {
+            return "--output does nothing with --view (save from the viewer's File menu)";
+        }
+        if (view && stats) {
+            return "--stats does nothing with --view";
+        }
+        return null;
+    }
+
+    /**
+     * A scene argument that cannot be meant, or null: an empty name, or one scene given twice (the same
+     * file on disk however spelled: it would be read twice and its image written twice).
+     */
+    String sceneProblem() {
+        java.util.Map<Object, Path> seen = new java.util.HashMap<>();
+        int stdin = 0;
+        for (Path p : scenes) {
+            String s = p.toString();
+            if (s.isEmpty()) {
+                return "an empty scene name ('') (expected a scene file, or '-' for standard input)";
+            }
+            if (s.equals(Outputs.STDIN)) {
+                if (++stdin > 1) {
+                    return "standard input ('-') can be read only once";
+                }
+                continue;
+            }
+            Object key;
+            try {
+                key = java.nio.file.Files.readAttributes(p, java.nio.file.attribute.BasicFileAttributes.class).fileKey();
+            } catch (java.io.IOException | RuntimeException e) {
+                key = null;
+            }
+            if (key == null) {
+                key = p.toAbsolutePath().normalize();
+            }
+            Path earlier = seen.putIfAbsent(key, p);
+            if (earlier != null) {
+                return "the scene " + p + " is given twice" + (earlier.toString().equals(s) ? "" : " (also as " + earlier + ")")
+                        + "; give each scene once";
+            }
+        }
+        return null;
     }
 
     /**
@@ -342,7 +451,7 @@ public final class Main implements Callable<Integer> {
 
     /** Keeps an error report on one line whatever an exception's message holds. */
     static String oneLine(String s) {
-        return s.replaceAll("[\\p{Cntrl}\u2028\u2029]+", " ");
+        return Failures.oneLine(s);
     }
 
     /** {@code nanos} as seconds with {@code digits} decimals (half up), without java.util.Formatter. */

@@ -12,8 +12,8 @@ import java.util.Map;
  * {@code -o FILE.png} for one scene; {@code -o FOLDER} (an existing folder, or a name ending in
  * {@code /}) for any number of scenes; {@code -o -}, or the scene {@code -} (read from standard input),
  * to standard output. Also refuses, before anything is rendered, an image that would replace a scene
- * on the command line, another scene's image or an existing .txt file that is not a PNG, deciding
- * identity by the file itself (links followed).
+ * on the command line or another scene's image, deciding identity by the file itself (links followed);
+ * what any existing file must be to be replaced is {@link ray.io.OutputFile}'s rule.
  */
 final class Outputs {
 
@@ -137,25 +137,10 @@ final class Outputs {
                 }
             }
         }
-        if (png.getFileName().toString().endsWith(".txt") && Files.isRegularFile(png) && !looksLikePng(png)) {
-            // e.g. `raytracer -o other.txt scene.txt`: a slip must not turn a (scene) text file into a PNG
-            throw new IOException(png + " exists and is not a PNG image; it is left as it is (remove it, or name another file)");
-        }
         Path key = realKey(png);
         Path earlier = written.get(key);
         if (earlier != null && !earlier.equals(scene)) {
             throw new IOException("the image " + png + " would replace the one just written for " + earlier);
-        }
-    }
-
-    /** Empty, or starting with the PNG signature: a file an image may replace. */
-    static boolean looksLikePng(Path p) {
-        byte[] sig = {(byte) 0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
-        try (java.io.InputStream in = Files.newInputStream(p)) {
-            byte[] head = in.readNBytes(sig.length);
-            return head.length == 0 || java.util.Arrays.equals(head, sig);
-        } catch (IOException e) {
-            return true;      // unreadable: the write itself will say why
         }
     }
 

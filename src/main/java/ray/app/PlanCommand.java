@@ -4,6 +4,7 @@ import java.io.PrintStream;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import ray.Failures;
 import ray.Scene;
 import ray.parse.Parser;
 import ray.parse.SceneFormatException;
@@ -23,19 +24,23 @@ final class PlanCommand {
 
     /**
      * Prints the plan of each scene rendered with {@code settings} (the command line's overrides,
-     * resolved against each scene).
+     * resolved against each scene); the scene {@code -} is read from {@code in}. Whatever a scene's
+     * own classes throw while it is read or planned (an Error, a StackOverflowError from a deep chain,
+     * an exception whose message throws) is one line naming the scene; the next scene is still
+     * planned. A plan that cannot be written to {@code out} (a closed pipe, a full disk) is a failure.
      */
-    static int run(List<Path> scenes, boolean json, RenderSettings settings, PrintStream out, PrintStream err) {
+    static int run(List<Path> scenes, boolean json, RenderSettings settings, java.io.InputStream in, PrintStream out, PrintStream err) {
         if (scenes.isEmpty()) {
             err.println("raytracer: --plan needs scene files");
             return 2;
         }
         int failed = 0;
         for (Path p : scenes) {
-            String name = p.toString();
+            boolean stdin = p.toString().equals("-");
+            String name = Failures.oneLine(stdin ? "<stdin>" : p.toString());
             List<String> warnings = new ArrayList<>();
             try {
-                Scene scene = Parser.parse(p, warnings);
+                Scene scene = stdin ? Parser.parse(in, name, warnings) : Parser.parse(p, warnings);
                 for (String w : warnings) {
                     err.println(w);
                 }
@@ -51,11 +56,18 @@ final class PlanCommand {
                             + CostGate.estimate(plan.bound().total(), Runtime.getRuntime().availableProcessors()));
                 }
             } catch (SceneFormatException e) {
-                err.println(e.getMessage());
+                err.println(Failures.oneLine(e.getMessage()));
                 failed++;
-            } catch (RuntimeException | LinkageError e) {   // a user's class failing in terms() or init()
-                err.println((name + ": cannot plan the scene: " + e).replaceAll("[\\p{Cntrl}\u2028\u2029]+", " "));
+            } catch (OutOfMemoryError e) {
+                err.println(name + ": out of memory while planning the scene (raise the heap, e.g. JAVA_OPTS=-Xmx16g)");
                 failed++;
+            } catch (Throwable e) {   // a user's class failing in terms(), init(), ... whatever it throws
+                err.println(name + ": cannot plan the scene: " + Failures.describe(e));
+                failed++;
+            }
+            out.flush();
+            if (out.checkError()) {
+                return 1;    // the command line says so (Main.outputChecked); no use planning the rest
             }
         }
         return failed == 0 ? 0 : 1;

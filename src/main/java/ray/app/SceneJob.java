@@ -7,12 +7,15 @@ import java.nio.file.Path;
 import java.nio.file.attribute.BasicFileAttributes;
 import java.util.ArrayList;
 import java.util.List;
+import ray.Failures;
 import ray.Scene;
 import ray.accel.Bvh;
 import ray.parse.Parser;
 import ray.parse.SceneFormatException;
 import ray.render.Image;
 import ray.render.PngEncoder;
+import ray.io.InputFiles;
+import ray.io.OutputFile;
 import ray.render.PngWriter;
 import ray.render.Renderer;
 import ray.plan.CostGate;
@@ -64,7 +67,7 @@ final class SceneJob {
             }
         }
         Outputs.Target target;
-        PngWriter.Pending pending = null;
+        OutputFile.Pending pending = null;
         try {
             target = outputs.target(scenePath);
             if (!target.stdout()) {
@@ -100,12 +103,12 @@ final class SceneJob {
         if (a.isRegularFile() || a.isDirectory()) {
             return null;
         }
-        return "cannot read the scene: not a regular file (" + PngWriter.kind(scene)
+        return "cannot read the scene: not a regular file (" + OutputFile.kind(scene)
                 + "); to read a scene from a pipe give '-' and send it to standard input";
     }
 
     /** Checks the destination before anything is rendered; null (reported) if it cannot be written. */
-    private PngWriter.Pending prepare(Path png) {
+    private OutputFile.Pending prepare(Path png) {
         try {
             return PngWriter.prepare(png);
         } catch (IOException e) {
@@ -126,25 +129,30 @@ final class SceneJob {
                 : Long.toString(Math.round(v))) + unit;
     }
 
-    private boolean render(Outputs.Target target, PngWriter.Pending pending) {
+    private boolean render(Outputs.Target target, OutputFile.Pending pending) {
         long t0 = System.nanoTime();
         Scene scene;
         List<String> warnings = new ArrayList<>();
         ExitGuard.working(name, null);
         try {
             scene = Outputs.isStdin(scenePath)
-                    ? Parser.parse(main.in().readAllBytes(), name, warnings) : Parser.parse(scenePath, warnings);
+                    ? Parser.parse(main.in(), name, warnings) : Parser.parse(scenePath, warnings);
         } catch (SceneFormatException e) {
             return fail(e.getMessage());
-        } catch (IOException e) {
-            return fail(name + ": cannot read the scene: " + e.getMessage());
         } catch (OutOfMemoryError e) {
             return fail(name + ": out of memory while reading the scene (raise the heap, e.g. JAVA_OPTS=-Xmx16g)");
         } catch (Throwable e) {       // a user's class (static initialiser, constructor, setter) or a parser bug
             return fail(name + ": reading the scene failed: " + Failures.describe(e));
         }
-        for (String w : warnings) {
-            err.println(w);
+        for (String w : main.quiet ? List.<String>of() : warnings) {    // -q: nothing but errors
+            err.println(Main.oneLine(w));
+        }
+        if (pending != null) {
+            try {
+                pending.protect(InputFiles.of(scene));   // -o model.obj for a scene that reads model.obj
+            } catch (IOException e) {
+                return fail(target + ": cannot write the image: " + e.getMessage());
+            }
         }
         RenderSettings settings = main.renderSettings().resolve(scene);
         RenderPlan plan;
@@ -177,6 +185,11 @@ final class SceneJob {
         try {
             image = renderer.render();
         } catch (OutOfMemoryError e) {
+            String m = Failures.message(e);
+            if (m != null && m.contains("native thread")) {    // not the heap: the system refused another thread
+                return fail(name + ": cannot start " + main.threads + " render threads (the system refused: " + m
+                        + "); give fewer with -j");
+            }
             return fail(name + ": out of memory while rendering (raise the heap, e.g. JAVA_OPTS=-Xmx16g)");
         } catch (Throwable e) {       // e.g. a user's own material failing, whatever it throws
             return fail(name + ": rendering failed: " + Failures.describe(e));
@@ -196,10 +209,10 @@ final class SceneJob {
                 }
                 summary = err;
             } else {
-                if (!main.quiet && "a FIFO".equals(PngWriter.kind(target.path()))) {
-                    err.println(name + ": writing the image into the FIFO " + target + " (waits until something reads it)");
+                if (!main.quiet && "a FIFO".equals(OutputFile.kind(target.path()))) {
+                    err.println(Main.oneLine(name + ": writing the image into the FIFO " + target + " (waits until something reads it)"));
                 }
-                pending.commit(image);
+                pending.commit(PngWriter.png(image));
                 outputs.wrote(scenePath, target.path());
             }
         } catch (IOException | RuntimeException e) {
@@ -208,7 +221,8 @@ final class SceneJob {
         long t3 = System.nanoTime();
         // plain concatenation, not printf: java.util.Formatter's first use loads locale data (~20 ms)
         if (!main.quiet && !main.json) {   // with --json, stdout holds JSON Lines only
-            summary.println(RenderReport.summaryLine(name, target.toString(), scene, settings, renderer.stats(), t3 - t0, t2 - t1));
+            summary.println(RenderReport.summaryLine(Main.oneLine(name), Main.oneLine(target.toString()), scene, settings, renderer.stats(),
+                    t3 - t0, t2 - t1));
             SamplingOptions.report(summary, renderer.summary());
         }
         if (main.stats && main.json) {
@@ -221,8 +235,8 @@ final class SceneJob {
             summary.println(RenderReport.statsLine(t1 - t0, build, t2 - t1 - build, t3 - t2, renderer.stats(), bytes, primitives,
                     Main.peakRssBytes(), Main.processCpuNanos()));
         }
-        if (renderer.stats().invalidSamples > 0) {
-            err.println(name + ": warning: " + renderer.stats().invalidSamples + " samples were NaN or infinite and were left black");
+        if (renderer.stats().invalidSamples > 0 && !main.quiet) {
+            err.println(Main.oneLine(name) + ": warning: " + renderer.stats().invalidSamples + " samples were NaN or infinite and were left black");
         }
         return true;
     }

@@ -27,6 +27,9 @@ public class GlazedMaterial extends Material {
     public Material base;
     public double mirrorCoefficient = 0.5;
 
+    /** Longest chain of Glazed materials, each the base of the next (each level is a nested call). */
+    public static final int MAX_CHAIN = 100;
+
     @Override
     public void init() {
         if (!Double.isFinite(mirrorCoefficient)) {
@@ -34,6 +37,17 @@ public class GlazedMaterial extends Material {
         }
         if (base == this) {
             throw new IllegalArgumentException("a glazed material cannot be its own base");
+        }
+        // each level of a chain of Glazed bases is a nested call (shading, the plan): bounded here, with
+        // its cause named, rather than a StackOverflowError later
+        int levels = 1;
+        for (Material m = base; m instanceof GlazedMaterial g && levels <= MAX_CHAIN; m = g.base) {
+            levels++;
+        }
+        if (levels > MAX_CHAIN) {
+            throw new IllegalArgumentException("a chain of more than " + MAX_CHAIN
+                    + " Glazed materials, each the base of the next (expected a shorter chain: the coefficients of a chain "
+                    + "multiply, so one Glazed with their sum reflects the same)");
         }
     }
 

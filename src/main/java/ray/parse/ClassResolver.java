@@ -108,7 +108,7 @@ final class ClassResolver {
         return !start;
     }
 
-    private Class<?> find(String name) {
+    private Class<?> find(String name) throws Problem {
         if (name.contains(".")) {
             return load(name);
         }
@@ -119,11 +119,30 @@ final class ClassResolver {
         return c;
     }
 
-    private Class<?> load(String qualified) {
+    /**
+     * The class, or null when there is none of that name. A class file that is there but cannot be
+     * loaded is a {@link Problem} naming the real cause, not "unknown class": compiled for a newer Java,
+     * its superclass or another class it needs missing from the class path, a damaged class file.
+     */
+    private Class<?> load(String qualified) throws Problem {
         try {
             return Class.forName(qualified, false, loader);   // never initialised here
-        } catch (ClassNotFoundException | LinkageError | RuntimeException e) {
+        } catch (ClassNotFoundException | RuntimeException e) {
             return null;
+        } catch (UnsupportedClassVersionError e) {
+            throw new Problem("class " + Values.quote(qualified) + " cannot be loaded: it was compiled for a newer Java than this one (Java "
+                    + Runtime.version().feature() + "): " + ray.Failures.message(e) + " (expected it recompiled, e.g. javac --release "
+                    + Runtime.version().feature() + ")");
+        } catch (NoClassDefFoundError e) {
+            String m = ray.Failures.message(e);
+            if (m != null && m.contains("wrong name")) {
+                return null;      // a case-insensitive file system found Sphere.class for 'sphere': no class of that name
+            }
+            throw new Problem("class " + Values.quote(qualified) + " cannot be loaded: it needs the class " + (m == null ? "?" : m.replace('/', '.'))
+                    + ", which is not on the class path (expected every class it extends or uses compiled beside it)");
+        } catch (LinkageError e) {
+            throw new Problem("class " + Values.quote(qualified) + " cannot be loaded: " + ray.Failures.simpleName(e.getClass())
+                    + (ray.Failures.message(e) == null ? "" : " (" + ray.Failures.message(e) + ")") + " (expected a class file javac wrote)");
         }
     }
 

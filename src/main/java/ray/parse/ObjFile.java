@@ -67,7 +67,14 @@ public final class ObjFile {
     public static void loadInto(ray.surface.Mesh mesh, Path folder) throws SceneFormatException {
         Path path;
         try {
-            path = folder.resolve(mesh.file);
+            Path rel = Path.of(mesh.file);
+            // a scene reads files beside it only: never /etc/passwd, ../../secret or /proc/self/environ,
+            // whose first line an error message would show (scenes are handed round and graded)
+            if (rel.isAbsolute() || rel.normalize().startsWith("..") || rel.normalize().toString().isEmpty()) {
+                throw new IllegalArgumentException("the OBJ file '" + mesh.file + "' is outside the scene file's folder (expected a path "
+                        + "relative to the scene file, inside its folder, e.g. 'String file models/bunny.obj')");
+            }
+            path = folder.resolve(rel);
         } catch (java.nio.file.InvalidPathException e) {
             throw new IllegalArgumentException("'" + mesh.file + "' is not a file name this system accepts (expected an OBJ file's path)");
         }
@@ -85,6 +92,12 @@ public final class ObjFile {
         if (Files.isDirectory(path)) {
             throw new IllegalArgumentException("cannot read the OBJ file " + shown + ": it is a directory (expected an OBJ file)");
         }
+        String special = Parser.notRegular(path);
+        if (special != null) {      // a FIFO waits for ever, /dev/zero never ends
+            throw new IllegalArgumentException("cannot read the OBJ file " + shown + ": not a regular file (" + special
+                    + "; expected an OBJ file)");
+        }
+        ray.io.InputFiles.read(path);
         LineReader reader = null;
         try (InputStream in = Files.newInputStream(path)) {
             reader = new LineReader(new InputStreamReader(in, StandardCharsets.UTF_8));
@@ -147,12 +160,67 @@ public final class ObjFile {
             String s = super.readLine();
             if (s != null) {
                 line++;
+                if (line == 1 && s.startsWith("\uFEFF")) {
+                    s = s.substring(1);      // a UTF-8 byte-order mark (as the scene parser skips it)
+                }
                 text = s;
                 if (s.indexOf('\0') >= 0) {
                     throw new Bad(line, "binary data (byte 0x00), expected a text OBJ file");
                 }
+                s = s.replace('\t', ' ');   // tabs separate like spaces (the library splits at spaces only)
+                exact(s);
             }
             return s;
+        }
+
+        /**
+         * Reads numbers as the scene parser does, before the library does it more loosely: plain decimals
+         * in v, vn and vt (no hex {@code 0x1p0}, no {@code 1f}/{@code 1d} suffix, no NaN), whole-number
+         * indices in f that fit an int (99999999999 is not wrapped round to 1215752191).
+         */
+        private void exact(String s) {
+            int hash = s.indexOf('#');
+            String[] w = (hash < 0 ? s : s.substring(0, hash)).strip().split(" +");
+            if (w.length == 0) {
+                return;
+            }
+            switch (w[0]) {
+                case "v", "vn", "vt" -> {
+                    for (int i = 1; i < w.length; i++) {
+                        if (!Values.isDecimal(w[i])) {
+                            throw new Bad(line, "cannot read " + Values.quote(text.strip()) + " (" + expected(s) + ")");
+                        }
+                    }
+                }
+                case "f" -> {
+                    for (int i = 1; i < w.length; i++) {
+                        for (String part : w[i].split("/", -1)) {
+                            if (tooLarge(part)) {
+                                throw new Bad(line, Values.quote(text.strip()) + " has the index " + part
+                                        + ", beyond any file's vertices (expected indices from 1 to 2147483647, or negative ones counting back)");
+                            }
+                        }
+                    }
+                }
+                default -> {
+                    // other statements are ignored
+                }
+            }
+        }
+
+        /** A whole number (digits, perhaps after '-') beyond an int: the library would wrap it round. */
+        private static boolean tooLarge(String t) {
+            int i = !t.isEmpty() && t.charAt(0) == '-' ? 1 : 0;
+            if (i == t.length()) {
+                return false;
+            }
+            for (int k = i; k < t.length(); k++) {
+                if (t.charAt(k) < '0' || t.charAt(k) > '9') {
+                    return false;       // not a number at all: the library's own message says so
+                }
+            }
+            String digits = t.substring(i).replaceFirst("^0+(?=.)", "");
+            return digits.length() > 10 || Long.parseLong(digits) > Integer.MAX_VALUE;
         }
     }
 

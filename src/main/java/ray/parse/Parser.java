@@ -69,6 +69,8 @@ public final class Parser {
     private int firstDegenerateLine;
 
     private int line;
+    /** The scene file when read from one (an input the output must never replace). */
+    private Path source;
     /** Lines the fast path read (for the test that it is taken: ParserFastPathTest). */
     private int fastLines;
 
@@ -85,10 +87,19 @@ public final class Parser {
     /** As {@link #parse(Path)}, adding warnings (e.g. zero-area triangles) as {@code file:line: warning: ...}. */
     public static Scene parse(Path path, List<String> warnings) throws SceneFormatException {
         String name = path.toString();
+        if (name.isEmpty()) {
+            throw new SceneFormatException("''", 0, "cannot read the scene: an empty file name (expected a scene file)");
+        }
         if (Files.isDirectory(path)) {
             throw new SceneFormatException(name, 0, "cannot read the scene: it is a directory (expected a scene file)");
         }
+        String special = notRegular(path);
+        if (special != null) {      // a FIFO would wait for a writer for ever, /dev/zero never end: in every mode
+            throw new SceneFormatException(name, 0, "cannot read the scene: not a regular file (" + special
+                    + "); to read a scene from a pipe give '-' and send it to standard input");
+        }
         Parser p = new Parser(name, Parser.class.getClassLoader());
+        p.source = path;
         try (InputStream in = Files.newInputStream(path)) {
             return p.run(Lines.of(in, name), warnings);
         } catch (NoSuchFileException e) {
@@ -102,6 +113,35 @@ public final class Parser {
             throw new SceneFormatException(name, p.line, "the scene is too large for this JVM's heap (expected fewer objects, "
                     + "or raise the heap with -Xmx, e.g. JAVA_OPTS=-Xmx16g)");
         }
+    }
+
+    /**
+     * Reads and parses a scene from a stream (standard input for the scene {@code -}) line by line, as a
+     * file is: a mistake is reported at its line as soon as it is read, and no more than one line is
+     * held before it is checked (`yes 'Width 10' | raytracer -` fails at line 2, at once).
+     */
+    public static Scene parse(InputStream in, String name, List<String> warnings) throws SceneFormatException {
+        Parser p = new Parser(name, Parser.class.getClassLoader());
+        try {
+            return p.run(Lines.of(in, name), warnings);
+        } catch (IOException e) {
+            throw new SceneFormatException(name, p.line, "cannot read the scene: " + (e.getMessage() == null
+                    ? e.getClass().getSimpleName() : e.getMessage()));
+        } catch (OutOfMemoryError e) {
+            throw new SceneFormatException(name, p.line, "the scene is too large for this JVM's heap (expected fewer objects, "
+                    + "or raise the heap with -Xmx, e.g. JAVA_OPTS=-Xmx16g)");
+        }
+    }
+
+    /** "a FIFO", "a character device", ... when {@code path} exists and is neither a regular file nor a folder; else null. */
+    static String notRegular(Path path) {
+        java.nio.file.attribute.BasicFileAttributes a;
+        try {
+            a = Files.readAttributes(path, java.nio.file.attribute.BasicFileAttributes.class);
+        } catch (IOException | SecurityException e) {
+            return null;       // missing or unreadable: opening it says which
+        }
+        return a.isRegularFile() || a.isDirectory() ? null : ray.io.OutputFile.kind(path);
     }
 
     /** Parses a scene file's bytes (UTF-8 text); {@code name} is used in messages. */
@@ -139,7 +179,25 @@ public final class Parser {
         }
     }
 
+    /**
+     * Parses, recording every file read meanwhile (the scene file, the objects' own files) as the
+     * scene's inputs ({@link ray.io.InputFiles}): nothing the program writes may replace one of them.
+     */
     private Scene run(Lines lines, List<String> warningsOut) throws SceneFormatException, IOException {
+        List<Path> outer = ray.io.InputFiles.begin();
+        Scene s = null;
+        try {
+            if (source != null) {
+                ray.io.InputFiles.read(source);
+            }
+            s = runLines(lines, warningsOut);
+            return s;
+        } finally {
+            ray.io.InputFiles.end(s, outer);
+        }
+    }
+
+    private Scene runLines(Lines lines, List<String> warningsOut) throws SceneFormatException, IOException {
         boolean any = false;
         while (lines.advance()) {
             line = lines.line();

@@ -69,8 +69,10 @@ public final class CostGate {
             return "unknown: a user class may trace any number of rays";
         }
         double s = rays / (RAYS_PER_THREAD_SECOND * Math.max(1, threads));
+        double year = 365.25 * 86400;
         String t = s < 1 ? "a second" : s < 90 ? Math.round(s) + " s" : s < 5400 ? Math.round(s / 60) + " min" : s < 3 * 86400 ? Math.round(s / 3600) + " h"
-                : Math.round(s / 86400) + " days";
-        return "up to about " + t + " on " + threads + " thread" + (threads == 1 ? "" : "s");
+                : s < 3 * year ? Math.round(s / 86400) + " days" : s < 1e6 * year ? Math.round(s / year) + " years" : null;
+        // never Math.round's Long.MAX_VALUE of days
+        return (t == null ? "more than a million years" : "up to about " + t) + " on " + threads + " thread" + (threads == 1 ? "" : "s");
     }
 }

@@ -57,13 +57,20 @@ public final class RayBound {
         b.perPoint = perPoint;
         b.branch = branch;
         b.depth = depth;
-        double hits = n * geometric(branch, depth), parents = n * geometric(branch, depth - 1);
+        // a known bound that overflows a double (glass at MaxDepth 1000: 2^1000 paths) stays finite, the
+        // largest double, so that it is refused as astronomical and never read as "unknown" (infinite)
+        double hits = finite(n * geometric(branch, depth)), parents = finite(n * geometric(branch, depth - 1));
         if (unknown) {   // a user's material: any number of rays of its own, each shading anything
             hits = parents = Double.POSITIVE_INFINITY;
         }
         b.rays[MIRROR] = mirror == 0 ? 0 : parents * mirror;
         b.rays[REFRACTION] = refraction == 0 ? 0 : parents * refraction;
         b.rays[SHADOW] = direct && perPoint > 0 ? hits * perPoint : 0;
+        if (!unknown) {
+            b.rays[MIRROR] = finite(b.rays[MIRROR]);
+            b.rays[REFRACTION] = finite(b.rays[REFRACTION]);
+            b.rays[SHADOW] = Double.isFinite(perPoint) ? finite(b.rays[SHADOW]) : b.rays[SHADOW];
+        }
         b.rays[USER] = unknown || direct && !plan.unknownLights.isEmpty() ? Double.POSITIVE_INFINITY : 0;
         return b;
     }
@@ -140,9 +147,16 @@ public final class RayBound {
     /** All kinds together (infinite where any is unknown). */
     public double total() {
         double t = 0;
+        boolean unknown = false;
         for (double r : rays) {
             t += r;
+            unknown |= r == Double.POSITIVE_INFINITY;
         }
-        return t;
+        return unknown ? t : finite(t);
+    }
+
+    /** {@code v}, or the largest double where a finite bound overflowed. */
+    private static double finite(double v) {
+        return v == Double.POSITIVE_INFINITY ? Double.MAX_VALUE : v;
     }
 }

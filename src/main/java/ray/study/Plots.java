@@ -28,7 +28,7 @@ final class Plots {
     }
 
     /** RMSE against median wall time on log-log axes, one curve per sampler (the MaxDepth rows apart). */
-    static void errorVersusTime(SceneStudy.Outcome o, Path png) throws IOException {
+    static void errorVersusTime(SceneStudy.Outcome o, ReportFolder dir, String png) throws IOException {
         XYChart c = new XYChartBuilder().width(760).height(480).title(o.name() + ": error against time")
                 .xAxisTitle("wall time (s, median of repeats)").yAxisTitle("RMSE (fraction of [0, 1])").build();
         c.getStyler().setXAxisLogarithmic(true).setYAxisLogarithmic(true).setLegendPosition(Styler.LegendPosition.OutsideE)
@@ -60,14 +60,14 @@ final class Plots {
         line.setMarker(SeriesMarkers.NONE).setLineColor(Color.GRAY)
                 .setLineStyle(new BasicStroke(1f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, new float[] {4f, 4f}, 0f));
         if (any) {
-            write(BitmapEncoder.getBufferedImage(c), png);
+            write(BitmapEncoder.getBufferedImage(c), dir, png);
         } else {
-            write(note(o.name() + ": every setting matches the reference exactly"), png);
+            write(note(o.name() + ": every setting matches the reference exactly"), dir, png);
         }
     }
 
     /** The adaptive sampler's own error estimate against its true RMSE, all scenes in one plot. */
-    static boolean honesty(List<SceneStudy.Outcome> outcomes, Path png) throws IOException {
+    static boolean honesty(List<SceneStudy.Outcome> outcomes, ReportFolder dir, String png) throws IOException {
         // tall enough for a legend line per scene
         XYChart c = new XYChartBuilder().width(760).height(Math.max(520, 21 * outcomes.size() + 140))
                 .title("adaptive: estimated against true image error")
@@ -99,7 +99,7 @@ final class Plots {
         guide(c, "estimate = truth", xs, 1, new float[] {1f, 0f});
         guide(c, "x 1.5", xs, 1.5, new float[] {5f, 4f});
         guide(c, "/ 1.5", xs, 1 / 1.5, new float[] {5f, 4f});
-        write(BitmapEncoder.getBufferedImage(c), png);
+        write(BitmapEncoder.getBufferedImage(c), dir, png);
         return true;
     }
 
@@ -116,7 +116,7 @@ final class Plots {
      * where that render's error is largest), cut from every grid setting and the reference and shown
      * magnified side by side, each labelled with its setting and RMSE over the crop.
      */
-    static void crops(SceneStudy.Outcome o, Path png) throws IOException {
+    static void crops(SceneStudy.Outcome o, ReportFolder dir, String png) throws IOException {
         List<Integer> idx = new ArrayList<>();
         for (int i = 0; i < o.rows().size(); i++) {
             Row r = o.rows().get(i);
@@ -149,7 +149,7 @@ final class Plots {
             }
         }
         g.dispose();
-        write(out, png);
+        write(out, dir, png);
     }
 
     private static double cropRmse(Image img, Image ref, int[] at, int size) {
@@ -214,9 +214,11 @@ final class Plots {
         return img;
     }
 
-    static void write(BufferedImage img, Path png) throws IOException {
-        if (!ImageIO.write(img, "png", png.toFile())) {
-            throw new IOException("no PNG writer");
-        }
+    static void write(BufferedImage img, ReportFolder dir, String png) throws IOException {
+        dir.write(png, out -> {
+            if (!ImageIO.write(img, "png", out)) {
+                throw new IOException("no PNG writer");
+            }
+        });
     }
 }

@@ -20,12 +20,12 @@ final class Report {
     private Report() {
     }
 
-    static void csv(SceneStudy.Outcome o, Path file) throws IOException {
+    static void csv(SceneStudy.Outcome o, ReportFolder dir, String file) throws IOException {
         StringBuilder b = new StringBuilder(Row.HEADER).append('\n');
         for (Row r : o.rows()) {
             b.append(r.csv()).append('\n');
         }
-        Files.write(file, b.toString().getBytes(StandardCharsets.UTF_8));
+        dir.write(file, b.toString().getBytes(StandardCharsets.UTF_8));
     }
 
     /** The sampler rows (not the MaxDepth ones), by sampler, in study order. */
@@ -188,7 +188,7 @@ final class Report {
                 : String.format(Locale.ROOT, "%.3f", s);
     }
 
-    static void html(List<SceneStudy.Outcome> outcomes, boolean honesty, String mode, double totalSeconds, Path file) throws IOException {
+    static void html(List<SceneStudy.Outcome> outcomes, boolean honesty, String mode, double totalSeconds, ReportFolder dir, String file) throws IOException {
         StringBuilder b = new StringBuilder();
         b.append("<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Accuracy against time</title>\n")
                 .append("<style>body{font-family:sans-serif;max-width:1100px;margin:2em auto;padding:0 1em}")
@@ -254,7 +254,7 @@ final class Report {
             b.append("</table>\n");
         }
         b.append("</body></html>\n");
-        Files.write(file, b.toString().getBytes(StandardCharsets.UTF_8));
+        dir.write(file, b.toString().getBytes(StandardCharsets.UTF_8));
     }
 
     /** The adaptive rows: estimate and its interval against the truth, with the reference's noise shown. */

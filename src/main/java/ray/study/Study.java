@@ -7,6 +7,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import ray.Failures;
 import ray.Scene;
 import ray.parse.Parser;
 import ray.parse.SceneFormatException;
@@ -26,6 +27,8 @@ public final class Study {
     private final PrintStream err;
     private final boolean progress;
     private int maxPixels = StudySettings.MAX_PIXELS;
+    /** Where the scene {@code -} is read from. */
+    private java.io.InputStream in = System.in;
 
     public Study(StudyRenderer renderer, StudySettings settings, int repeats, PrintStream out, PrintStream err, boolean progress) {
         if (repeats < 1) {
@@ -43,9 +46,10 @@ public final class Study {
      * The study as the command line runs it: the built-in renderer on {@code threads} threads, 3 repeats,
      * each scene at most {@link StudySettings#MAX_PIXELS} pixels unless {@code fullSize}.
      */
-    public static int run(List<Path> scenes, boolean quick, boolean fullSize, Path outDir, int threads, PrintStream out,
-                          PrintStream err, boolean progress) {
+    public static int run(List<Path> scenes, boolean quick, boolean fullSize, Path outDir, int threads, java.io.InputStream in,
+                          PrintStream out, PrintStream err, boolean progress) {
         Study s = new Study(new RendererAdapter(threads), quick ? StudySettings.QUICK : StudySettings.FULL, 3, out, err, progress);
+        s.in = in;
         if (fullSize) {
             s.maxPixels(Integer.MAX_VALUE);
         }
@@ -62,13 +66,20 @@ public final class Study {
         return this;
     }
 
-    /** Returns 0 when every scene was studied, 1 when any could not be read or rendered. */
+    /**
+     * Returns 0 when every scene was studied, 1 when any could not be read, rendered or reported. A
+     * failing scene (a user's class throwing anything, even an Error or an exception whose message
+     * throws) is one line naming it; the other scenes are still studied and the report still written.
+     * The report folder is checked before the first render ({@link ReportFolder}): nothing in it that a
+     * study did not write is replaced, and no link in it is followed.
+     */
     public int run(List<Path> scenePaths, Path outDir, String mode) {
         long t0 = System.nanoTime();
+        ReportFolder folder;
         try {
-            Files.createDirectories(outDir);
+            folder = ReportFolder.open(outDir);
         } catch (IOException e) {
-            err.println(outDir + ": cannot create the report folder (" + e.getMessage() + ")");
+            err.println(Failures.oneLine(outDir + ": " + e.getMessage()));
             return 1;
         }
         List<String> names = new ArrayList<>();
@@ -77,18 +88,35 @@ public final class Study {
         List<Path> parsed = new ArrayList<>();
         int failed = 0;
         for (Path p : scenePaths) {
+            boolean stdin = p.toString().equals("-");
+            String shown = Failures.oneLine(stdin ? "<stdin>" : p.toString());
             try {
-                Scene scene = Parser.parse(p);
+                Scene scene = stdin ? Parser.parse(in, shown, new ArrayList<>()) : Parser.parse(p);
                 sizes.add(new int[] {scene.width, scene.height});
                 StudySettings.fit(scene, maxPixels);
                 scenes.add(scene);
                 parsed.add(p);
-                String n = p.getFileName().toString();
-                names.add(n.endsWith(".txt") ? n.substring(0, n.length() - 4) : n);
             } catch (SceneFormatException e) {
-                err.println(e.getMessage());
+                err.println(Failures.oneLine(e.getMessage()));
+                failed++;
+            } catch (OutOfMemoryError e) {
+                err.println(shown + ": out of memory while reading the scene (raise the heap, e.g. JAVA_OPTS=-Xmx16g)");
+                failed++;
+            } catch (Throwable e) {     // a user's class (static initialiser, constructor, setter)
+                err.println(shown + ": reading the scene failed: " + Failures.describe(e));
                 failed++;
             }
+        }
+        names.addAll(ReportFolder.stems(parsed));
+        List<String> files = new ArrayList<>(List.of("index.html", "adaptive-honesty.png"));
+        for (String n : names) {
+            files.addAll(List.of(n + ".csv", n + "-error-vs-time.png", n + "-crops.png"));
+        }
+        try {
+            folder.claim(files);
+        } catch (IOException e) {
+            err.println(Failures.oneLine(e.getMessage()));
+            return 1;
         }
         SceneStudy study = new SceneStudy(renderer, settings, repeats);
         double total = 0;
@@ -99,36 +127,59 @@ public final class Study {
         List<SceneStudy.Outcome> outcomes = new ArrayList<>();
         for (int i = 0; i < scenes.size(); i++) {
             String name = names.get(i);
+            String shown = Failures.oneLine(parsed.get(i).toString().equals("-") ? "<stdin>" : parsed.get(i).toString());
             bar.label = name;
+            SceneStudy.Outcome o;
             try {
-                SceneStudy.Outcome o = study.run(name, scenes.get(i), sizes.get(i)[0], sizes.get(i)[1], bar::advance);
-                outcomes.add(o);
-                Report.csv(o, outDir.resolve(name + ".csv"));
-                Plots.errorVersusTime(o, outDir.resolve(name + "-error-vs-time.png"));
-                Plots.crops(o, outDir.resolve(name + "-crops.png"));
+                o = study.run(name, scenes.get(i), sizes.get(i)[0], sizes.get(i)[1], bar::advance);
+            } catch (OutOfMemoryError e) {
+                bar.clear();
+                err.println(shown + ": out of memory while rendering (raise the heap, e.g. JAVA_OPTS=-Xmx16g)");
+                failed++;
+                continue;
+            } catch (Throwable e) {      // a user's class failing while it renders, whatever it throws
+                bar.clear();
+                err.println(shown + ": rendering failed: " + Failures.describe(e));
+                failed++;
+                continue;
+            }
+            outcomes.add(o);
+            try {
+                Report.csv(o, folder, name + ".csv");
+                Plots.errorVersusTime(o, folder, name + "-error-vs-time.png");
+                Plots.crops(o, folder, name + "-crops.png");
             } catch (IOException e) {
                 bar.clear();
-                err.println(outDir + ": cannot write the report for " + name + " (" + e.getMessage() + ")");
+                err.println(Failures.oneLine(e.getMessage()));
                 failed++;
-            } catch (RuntimeException | StackOverflowError e) {
+            } catch (RuntimeException e) {   // the plotting library refusing the data
                 bar.clear();
-                err.println(parsed.get(i) + ": rendering failed: " + e);
+                err.println(shown + ": cannot plot the report: " + Failures.describe(e));
                 failed++;
             }
         }
         bar.clear();
+        boolean honesty = false;
         try {
-            boolean honesty = Plots.honesty(outcomes, outDir.resolve("adaptive-honesty.png"));
-            Report.html(outcomes, honesty, mode, (System.nanoTime() - t0) / 1e9, outDir.resolve("index.html"));
+            honesty = Plots.honesty(outcomes, folder, "adaptive-honesty.png");
         } catch (IOException e) {
-            err.println(outDir + ": cannot write index.html (" + e.getMessage() + ")");
+            err.println(Failures.oneLine(e.getMessage()));
+            failed++;
+        } catch (RuntimeException e) {
+            err.println(Failures.oneLine(outDir + ": cannot plot adaptive-honesty.png: " + Failures.describe(e)));
+            failed++;
+        }
+        try {
+            Report.html(outcomes, honesty, mode, (System.nanoTime() - t0) / 1e9, folder, "index.html");
+        } catch (IOException e) {
+            err.println(Failures.oneLine(e.getMessage()));
             return 1;
         }
         for (SceneStudy.Outcome o : outcomes) {
-            out.println(o.name() + ": " + Report.psnrSentence(o, Report.TARGET_PSNR_DB));
+            out.println(Failures.oneLine(o.name() + ": " + Report.psnrSentence(o, Report.TARGET_PSNR_DB)));
         }
-        out.println(String.format(Locale.ROOT, "study of %d scene(s) in %.1f s: %s", outcomes.size(),
-                (System.nanoTime() - t0) / 1e9, outDir.resolve("index.html")));
+        out.println(Failures.oneLine(String.format(Locale.ROOT, "study of %d scene(s) in %.1f s: %s", outcomes.size(),
+                (System.nanoTime() - t0) / 1e9, outDir.resolve("index.html"))));
         return failed == 0 ? 0 : 1;
     }
 

@@ -64,6 +64,7 @@ public class CSG extends Surface {
         }
         checkOperand("left", left);
         checkOperand("right", right);
+        measure();
         if (!initialized) {
             initialized = true;
             ownMaterial = material != null;
@@ -71,6 +72,45 @@ public class CSG extends Surface {
         if (!ownMaterial) {
             material = left.material;   // stands for the operands' materials wherever a surface's one is asked for
         }
+    }
+
+    /**
+     * Most operand visits one ray may cost a CSG: the sum over its nodes of each node's leaves (an operand
+     * used twice counted twice). A left-deep chain of n unions costs about n^2 / 2 (at most about 90
+     * surfaces), a balanced tree n log2 n (about 500); CSGs that share operands level after level double
+     * at each level and are refused at once instead of running for hours.
+     */
+    public static final long MAX_VISITS = 4096;
+
+    /** Leaves of this tree (a shared operand once per use), levels, and operand visits a ray may cost (saturating). */
+    private long leaves = 1, visits;
+    private int levels;
+
+    /**
+     * Measures the tree from its operands' own measures (each CSG is initialised after its operands, so
+     * this costs O(1) whatever the tree), and refuses one whose cost per ray is beyond
+     * {@link #MAX_VISITS}: shared operands (`ref left c9`, `ref right c9`) double it at
+     * each level, and would otherwise hang the render and the plan.
+     */
+    private void measure() {
+        long ll = left instanceof CSG c ? c.leaves : 1, rl = right instanceof CSG c ? c.leaves : 1;
+        long lv = left instanceof CSG c ? c.visits : 0, rv = right instanceof CSG c ? c.visits : 0;
+        leaves = sat(ll + rl);
+        visits = sat(sat(lv + rv) + leaves);
+        levels = 1 + Math.max(left instanceof CSG c ? c.levels : 0, right instanceof CSG c ? c.levels : 0);
+        if (visits > MAX_VISITS) {
+            throw new IllegalArgumentException("this CSG tree would cost " + (visits == Long.MAX_VALUE ? "over 9e18"
+                    : String.format(java.util.Locale.ROOT, "%,d", visits)) + " operand tests per ray (" + levels + " levels, "
+                    + (leaves == Long.MAX_VALUE ? "over 9e18" : String.format(java.util.Locale.ROOT, "%,d", leaves))
+                    + " leaves counting an operand each time it is used), more than "
+                    + String.format(java.util.Locale.ROOT, "%,d", MAX_VISITS)
+                    + " (expected a smaller tree: a chain of at most about 90 unions, a balanced tree of about 500 "
+                    + "surfaces; for more, one closed Mesh)");
+        }
+    }
+
+    private static long sat(long v) {
+        return v < 0 ? Long.MAX_VALUE : v;
     }
 
     private static void checkOperand(String side, Surface s) {

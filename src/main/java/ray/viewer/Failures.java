@@ -25,21 +25,16 @@ final class Failures {
                 b.append(" (").append(at.getFileName()).append(':').append(at.getLineNumber()).append(')');
             }
         }
-        b.append(": ").append(e.getClass().getSimpleName());
-        if (e.getMessage() != null) {
-            b.append(": ").append(e.getMessage());
+        b.append(": ").append(ray.Failures.simpleName(e.getClass()));
+        String m = ray.Failures.message(e);     // never throws, even when the user's getMessage() does; cut to a line
+        if (m != null) {
+            b.append(": ").append(m);
         }
         return oneLine(b.toString());
     }
 
     private static StackTraceElement firstOutsideJdk(Throwable e) {
-        for (StackTraceElement el : e.getStackTrace()) {
-            String c = el.getClassName();
-            if (!(c.startsWith("java.") || c.startsWith("javax.") || c.startsWith("jdk.") || c.startsWith("sun."))) {
-                return el;
-            }
-        }
-        return null;
+        return ray.Failures.where(e);     // never throws, even for a user's Throwable with an odd stack
     }
 
     /** Why a file operation failed, without the (temporary) path the exception may name. */

@@ -130,11 +130,11 @@ public final class RenderSession {
         } catch (SceneFormatException e) {
             fail(job, e.getMessage(), false);
             return;
-        } catch (RuntimeException | StackOverflowError e) {     // a user class's init() or a parser bug
-            fail(job, Failures.describe(job.file + ": reading the scene failed", e), false);
-            return;
         } catch (OutOfMemoryError e) {
             fail(job, job.file + ": the scene is too large for this JVM's heap (raise it, e.g. JAVA_OPTS=-Xmx16g)", false);
+            return;
+        } catch (Throwable e) {     // a user class's init() (any Error too) or a parser bug: the job must end, never hang
+            fail(job, Failures.describe(job.file + ": reading the scene failed", e), false);
             return;
         }
         job.parseNanos = System.nanoTime() - t0;
@@ -199,7 +199,7 @@ public final class RenderSession {
             // stop() or a newer job: already reported
         } catch (OutOfMemoryError e) {
             fail(job, job.file + ": out of memory while rendering (raise the heap, e.g. JAVA_OPTS=-Xmx16g)", true);
-        } catch (RuntimeException | StackOverflowError e) {
+        } catch (Throwable e) {     // whatever a user's class throws (AssertionError, a checked one sneakily): never a hang
             fail(job, Failures.describe(job.file + ": rendering failed", e), true);
         }
     }

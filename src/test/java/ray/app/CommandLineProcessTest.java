@@ -207,4 +207,76 @@ class CommandLineProcessTest {
         assertFalse(Files.exists(dir.resolve("relaunched.txt")), "a short first scene renders here");
         assertTrue(Files.size(dir.resolve("short.png")) > 0);
     }
+
+    private static final String CLASS = """
+            import java.util.Set;
+            import javax.vecmath.Vector3d;
+            import ray.IntersectionRecord;
+            import ray.Ray;
+            import ray.Scene;
+            import ray.material.Material;
+            import ray.plan.Term;
+
+            public class %s extends Material {
+                %s
+                @Override
+                public Vector3d shade(Ray ray, IntersectionRecord record, Scene scene) {
+                    %s
+                }
+            }
+            """;
+
+    /**
+     * Standard output carries only the image or the JSON: a student's System.out.println (in a
+     * constructor, in shade()) goes to stderr, in every mode that writes to stdout.
+     */
+    @Test
+    void userPrintlnNeverReachesStandardOutput() throws Exception {
+        Path classes = compile(Map.of("Printer", CLASS.formatted("Printer", "public Printer() { System.out.println(\"made\"); }",
+                "System.out.println(\"debug\"); System.out.print('x'); return new Vector3d(1, 0, 0);")));
+        Files.writeString(dir.resolve("p.txt"), sceneWith("Printer"));
+        Result png = raytracer(classes, null, null, "-q", "-o", "-", "p.txt");
+        assertEquals(0, png.status(), png.err());
+        javax.imageio.ImageIO.setUseCache(false);
+        java.awt.image.BufferedImage img = javax.imageio.ImageIO.read(new java.io.ByteArrayInputStream(png.out()));
+        assertTrue(img != null && img.getWidth() == 4, "stdout is exactly a PNG");
+        assertTrue(png.err().contains("debug") && png.err().contains("made"), "the debug lines went to stderr: " + png.err());
+        for (String[] args : new String[][] {{"--plan", "--json", "p.txt"}, {"--stats", "--json", "-o", "p.png", "p.txt"}}) {
+            Result r = raytracer(classes, null, null, args);
+            assertEquals(0, r.status(), r.err());
+            String out = new String(r.out(), java.nio.charset.StandardCharsets.UTF_8);
+            assertEquals(1, out.lines().count(), out);
+            assertTrue(out.startsWith("{") && out.endsWith("}\n"), "one JSON line only: " + out);
+        }
+    }
+
+    /**
+     * System.exit from user code is never a success in any mode: under --plan (in terms()), under
+     * --study (in shade()), and from a thread a user's class started, which exits between two scenes.
+     */
+    @Test
+    void systemExitIsNotASuccessInAnyMode() throws Exception {
+        Path classes = compile(Map.of(
+                "QuitTerms", CLASS.formatted("QuitTerms", "@Override public Set<Term> terms() { System.exit(0); return null; }",
+                        "return new Vector3d();"),
+                "QuitShade", CLASS.formatted("QuitShade", "", "System.exit(0); return null;"),
+                "QuitLater", CLASS.formatted("QuitLater", "public QuitLater() { new Thread(() -> { try { Thread.sleep(300); } "
+                        + "catch (InterruptedException e) { } System.exit(0); }).start(); }", "return new Vector3d(0, 1, 0);"),
+                "Slow", CLASS.formatted("Slow", "static volatile boolean slept;",
+                        "if (!slept) { slept = true; try { Thread.sleep(4000); } catch (InterruptedException e) { } } return new Vector3d();")));
+        Files.writeString(dir.resolve("terms.txt"), sceneWith("QuitTerms"));
+        Files.writeString(dir.resolve("shade.txt"), sceneWith("QuitShade"));
+        Files.writeString(dir.resolve("later.txt"), sceneWith("QuitLater"));
+        Files.writeString(dir.resolve("slow.txt"), sceneWith("Slow"));
+        Result plan = raytracer(classes, null, null, "--plan", "terms.txt");
+        assertEquals(1, plan.status(), plan.err());
+        assertTrue(plan.err().contains("QuitTerms.terms called System.exit"), plan.err());
+        Result study = raytracer(classes, null, null, "--study", "--quick", "--report-dir", "r", "shade.txt");
+        assertEquals(1, study.status(), study.err());
+        assertTrue(study.err().contains("QuitShade.shade called System.exit"), study.err());
+        Result later = raytracer(classes, null, null, "-q", "-j", "1", "later.txt", "slow.txt");
+        assertEquals(1, later.status(), later.err());
+        assertTrue(later.err().contains("called System.exit"), later.err());
+        assertFalse(Files.exists(dir.resolve("slow.png")), "the second scene was not finished");
+    }
 }

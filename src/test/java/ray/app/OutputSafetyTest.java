@@ -132,7 +132,7 @@ class OutputSafetyTest {
         assertEquals(0, r.status(), r.err());
         assertEquals(List.of(scene + ": writing the image into the FIFO " + fifo + " (waits until something reads it)"), r.errLines(),
                 "says what it waits for");
-        assertEquals("a FIFO", ray.render.PngWriter.kind(fifo), "still a FIFO");
+        assertEquals("a FIFO", ray.io.OutputFile.kind(fifo), "still a FIFO");
         byte[] png = reader.get(20, java.util.concurrent.TimeUnit.SECONDS);
         assertEquals((byte) 0x89, png[0]);
         assertEquals('P', png[1]);
@@ -146,7 +146,7 @@ class OutputSafetyTest {
         assumeTrue(exec("mknod", dev.toString(), "c", "1", "3"), "mknod (root) is needed to make a device node");
         Run r = run("-q", "-o", dev.toString(), scene.toString());
         assertEquals(0, r.status(), r.err());
-        assertEquals("a character device", ray.render.PngWriter.kind(dev));
+        assertEquals("a character device", ray.io.OutputFile.kind(dev));
     }
 
     /** A FIFO as the scene is refused at once, never waited on (there is no writer). */
@@ -245,7 +245,7 @@ class OutputSafetyTest {
         Path scene = write("a.txt", GOOD), notes = write("notes.txt", "my notes\n"), empty = write("empty.txt", "");
         Run r = run("-q", "-o", notes.toString(), scene.toString());
         assertEquals(1, r.status());
-        assertEquals(List.of(scene + ": " + notes + " exists and is not a PNG image; it is left as it is (remove it, or name another file)"),
+        assertEquals(List.of(notes + ": cannot write the image: it is not a PNG image; it is left as it is (remove it, or name another file)"),
                 r.errLines());
         assertEquals("my notes\n", Files.readString(notes));
         assertEquals(0, run("-q", "-o", empty.toString(), scene.toString()).status(), "an empty file may be replaced");

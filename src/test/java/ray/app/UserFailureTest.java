@@ -11,6 +11,8 @@ import java.util.List;
 import javax.vecmath.Vector3d;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+
+import ray.Failures;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.Scene;

@@ -195,6 +195,38 @@ class RenderSessionTest {
         assertTrue(events.log.contains("rendering throws.txt"), events.log::toString);
     }
 
+    /**
+     * Whatever a user's class throws (an Error in terms() or shade(), an exception whose getMessage()
+     * throws) ends the job as failed with one line: the viewer never waits for ever.
+     */
+    @Test
+    void anyUserFailureEndsTheJob(@TempDir Path dir) throws Exception {
+        String[][] cases = {
+            {"ray.app.HostileRunTest$TermsError", "AssertionError: terms not written yet"},
+            {"ray.app.UserFailureTest$Asserting", "AssertionError: invariant broken"},
+            {"ray.app.UserFailureTest$BadMessage", "its getMessage() threw IllegalStateException"},
+        };
+        for (String[] c : cases) {
+            Path scene = write(dir, "u.txt", GOOD.replace("Material Diffuse red", "Material " + c[0] + " red")
+                    .replace("Vector3d diffuseColor [0.8 0.1 0.1]\n", ""));
+            RenderJob job = session.open(scene);
+            runUntilFinished(job);
+            assertEquals(RenderJob.State.FAILED, job.state(), c[0]);
+            assertTrue(job.error().startsWith(scene + ": rendering failed in ") && job.error().endsWith(c[1]), job.error());
+        }
+    }
+
+    /** A FIFO opened in the viewer is refused at once, never waited on. */
+    @Test
+    void aFifoIsRefusedNotWaitedOn(@TempDir Path dir) throws Exception {
+        Path fifo = dir.resolve("pipe.txt");
+        org.junit.jupiter.api.Assumptions.assumeTrue(new ProcessBuilder("mkfifo", fifo.toString()).start().waitFor() == 0);
+        RenderJob job = session.open(fifo);
+        runUntilFinished(job);
+        assertEquals(RenderJob.State.FAILED, job.state());
+        assertTrue(job.error().startsWith(fifo + ": cannot read the scene: not a regular file (a FIFO)"), job.error());
+    }
+
     @Test
     void missingFileIsReportedAndNothingCanBeSaved(@TempDir Path dir) throws Exception {
         RenderJob job = session.open(dir.resolve("nope.txt"));

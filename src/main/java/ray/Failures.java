@@ -1,11 +1,12 @@
-package ray.app;
+package ray;
 
 /**
  * Turns any {@link Throwable} (most often from a user's own class: an exception, an {@code Error}, a
  * checked exception thrown sneakily, one whose {@code getMessage()} itself throws) into a short,
- * one-line description naming its class, its message and the method that threw it.
+ * one-line description naming its class, its message and the method that threw it. Every mode reports
+ * user code's failures through here: the render, {@code --plan}, {@code --study}, the viewer.
  */
-final class Failures {
+public final class Failures {
 
     /** Longest message kept from a throwable; longer ones are cut with "...". */
     static final int MAX_MESSAGE = 200;
@@ -17,7 +18,7 @@ final class Failures {
      * {@code SimpleName (message) at Class.method(File.java:12)}; an IllegalArgumentException or
      * IllegalStateException with a message (a value a scene object refused) is just its message.
      */
-    static String describe(Throwable e) {
+    public static String describe(Throwable e) {
         String msg = message(e);
         Throwable cause = cause(e);
         if (msg == null && cause != null) {     // ExceptionInInitializerError, InvocationTargetException, ...
@@ -31,7 +32,7 @@ final class Failures {
     }
 
     /** The message, on one line and cut to {@link #MAX_MESSAGE}, or null; never throws. */
-    static String message(Throwable e) {
+    public static String message(Throwable e) {
         String m;
         try {
             m = e.getMessage();
@@ -41,12 +42,12 @@ final class Failures {
         if (m == null) {
             return null;
         }
-        m = Main.oneLine(m).trim();
+        m = oneLine(m).trim();
         return m.length() <= MAX_MESSAGE ? m : m.substring(0, MAX_MESSAGE) + "... (" + m.length() + " characters)";
     }
 
     /** The simple name, or for an anonymous class its binary name without the package. */
-    static String simpleName(Class<?> c) {
+    public static String simpleName(Class<?> c) {
         String s = c.getSimpleName();
         if (!s.isEmpty()) {
             return s;
@@ -67,7 +68,7 @@ final class Failures {
      * The frame to blame: the first one outside the JDK (so a NullPointerException inside a JDK
      * method called by a user's shade() names shade()), else the top frame; null without a stack.
      */
-    static StackTraceElement where(Throwable e) {
+    public static StackTraceElement where(Throwable e) {
         StackTraceElement[] st;
         try {
             st = e.getStackTrace();
@@ -87,7 +88,12 @@ final class Failures {
         return st[0];
     }
 
+    /** Keeps an error report on one line whatever a message or a file name holds (control characters become spaces). */
+    public static String oneLine(String s) {
+        return s.replaceAll("[\\p{Cntrl}\u2028\u2029]+", " ");
+    }
+
     private static String safeString(StackTraceElement f) {
-        return Main.oneLine(f.toString());
+        return oneLine(f.toString());
     }
 }
