@@ -144,10 +144,14 @@ public final class Main implements Callable<Integer> {
      * The {@code raytracer} process: {@link #run} with the exit guard installed, so a user's class that
      * calls System.exit while its scene renders cannot end the run with a success status.
      */
+    /** The process's real standard output, once {@link #runProcess} has moved System.out to stderr. */
+    private static volatile PrintStream processStdout;
+
     public static int runProcess(String... args) {
         // Standard output carries only the image (-o -, the scene '-') or JSON Lines: what a user's class
         // prints there (System.out.println, the usual debug line in shade()) goes to stderr instead.
         PrintStream stdout = System.out;
+        processStdout = stdout;
         System.setOut(new PrintStream(new java.io.FileOutputStream(java.io.FileDescriptor.err), true));
         ExitGuard.install(System.err);
         ExitGuard.active(true);
@@ -291,7 +295,8 @@ public final class Main implements Callable<Integer> {
             return 2;
         }
         int failed = 0;
-        mayRelaunch = in == System.in && out == System.out && err == System.err && JitPolicy.launcher() != null;
+        mayRelaunch = in == System.in && out == (processStdout != null ? processStdout : System.out) && err == System.err
+                && JitPolicy.launcher() != null;
         for (Path scene : scenes) {
             boolean ok = new SceneJob(this, scene, outputs).run();
             if (relaunched >= 0) {

@@ -34,10 +34,15 @@ class CommandLineFuzzTest {
     private static final String BAD = "Width 4\nHeight 3\n\nCamera Camera\nSurface Sphre\n";
     private static final String[] OPTIONS = {"-o", "--output", "-j", "--threads", "-q", "--quiet", "--stats", "--json",
         "--plan", "--cut-faint", "--allow-long", "--sampler", "--samples", "--target-error", "--", "-", "-h", "-V", "-qj",
-        "--output=", "--threads=", "-o-", "--no-such", "jittered", "adaptive", "0", "1", "2", "-1", "99999999999"};
+        "--output=", "--threads=", "-o-", "--no-such", "jittered", "adaptive", "0", "1", "2", "-1", "99999999999",
+        "--study", "--quick", "--full-size", "--report-dir", "--view", "--max-depth", "40000"};
     private static final String[] NAMES = {"good.txt", "bad.txt", "sub", "sub/", "link.txt", "dirlink", "dirlink/good.txt",
         "@good.txt", "-dash.txt", "missing.txt", "missing/", "good.png", "out", "sub/x.png", "x".repeat(250) + ".txt",
-        "y".repeat(300), "", ".", "sub/../good.txt", "good.txt/x.png"};
+        "y".repeat(300), "", ".", "sub/../good.txt", "good.txt/x.png",
+        "mesh.txt", "model.obj", "notes.txt", "notes-link.png", "ro.png", "mesh.png", "site", "site/", "dag.txt"};
+    private static final String OBJ = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    private static final String MESH = GOOD + "\nMaterial Diffuse d\n\nSurface Mesh\nString file model.obj\nref material d\n";
+    private static final byte[] RO_PNG = {(byte) 0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n', 4, 2};
 
     private static Path dir;
 
@@ -51,6 +56,18 @@ class CommandLineFuzzTest {
             Files.createDirectories(dir.resolve("sub"));
             Files.createSymbolicLink(dir.resolve("link.txt"), dir.resolve("good.txt"));
             Files.createSymbolicLink(dir.resolve("dirlink"), dir);
+            // the files issue 17 protects: a scene's OBJ input, a note behind a .png link, a read-only image
+            Files.writeString(dir.resolve("model.obj"), OBJ);
+            Files.writeString(dir.resolve("mesh.txt"), MESH);
+            Files.writeString(dir.resolve("notes.txt"), "notes\n");
+            Files.createSymbolicLink(dir.resolve("notes-link.png"), dir.resolve("notes.txt"));
+            Files.write(dir.resolve("ro.png"), RO_PNG);
+            dir.resolve("ro.png").toFile().setReadOnly();
+            StringBuilder dag = new StringBuilder(GOOD).append("\nMaterial Diffuse d\n\nSurface Sphere c0\nref material d\n\n");
+            for (int k = 1; k <= 30; k++) {
+                dag.append("Surface CSG c").append(k).append("\nref left c").append(k - 1).append("\nref right c").append(k - 1).append("\n\n");
+            }
+            Files.writeString(dir.resolve("dag.txt"), dag);
         }
         return dir;
     }
@@ -64,22 +81,86 @@ class CommandLineFuzzTest {
         return root + "/" + clean;
     }
 
+    /** Where the arguments come from: the fuzzer's bytes, or a seeded random source (the normal test task). */
+    interface Choices {
+        int pick(int min, int max);
+
+        String pick(String[] values);
+
+        String text(int max);
+    }
+
     @Timeout(value = 20, unit = TimeUnit.SECONDS)
     @FuzzTest(maxDuration = "60s")
     void commandLineNeverMisbehaves(FuzzedDataProvider data) throws IOException {
+        check(new Choices() {
+            @Override
+            public int pick(int min, int max) {
+                return data.consumeInt(min, max);
+            }
+
+            @Override
+            public String pick(String[] values) {
+                return data.pickValue(values);
+            }
+
+            @Override
+            public String text(int max) {
+                return data.consumeString(max);
+            }
+        });
+    }
+
+    /**
+     * The same checks on 40 seeded random command lines in every `gradle test` (the fuzzer's seeds alone
+     * seldom reach --study, --plan with a Mesh, or the protected files): render, --plan, --study, -o -.
+     */
+    @org.junit.jupiter.api.Test
+    void seededCommandLinesNeverMisbehave() throws IOException {
+        java.util.Random r = new java.util.Random(17);
+        Choices c = new Choices() {
+            @Override
+            public int pick(int min, int max) {
+                return min + r.nextInt(max - min + 1);
+            }
+
+            @Override
+            public String pick(String[] values) {
+                return values[r.nextInt(values.length)];
+            }
+
+            @Override
+            public String text(int max) {
+                StringBuilder b = new StringBuilder();
+                for (int i = r.nextInt(max + 1); i > 0; i--) {
+                    b.append((char) (r.nextInt(8) == 0 ? r.nextInt(0x3000) : ' ' + r.nextInt(95)));
+                }
+                return b.toString();
+            }
+        };
+        for (int i = 0; i < 40; i++) {
+            check(c);
+        }
+    }
+
+    private void check(Choices data) throws IOException {
         Path root = folder();
         List<String> args = new ArrayList<>();
-        int n = data.consumeInt(0, 8);
+        int n = data.pick(0, 8);
         for (int i = 0; i < n; i++) {
-            switch (data.consumeInt(0, 3)) {
-                case 0 -> args.add(data.pickValue(OPTIONS));
-                case 1 -> args.add(inside(root, data.pickValue(NAMES)));
-                case 2 -> args.add(inside(root, data.consumeString(40)));
-                default -> args.add(data.consumeString(20).replace("..", "").replace("/", "_"));   // stays relative: no path
+            switch (data.pick(0, 3)) {
+                case 0 -> args.add(data.pick(OPTIONS));
+                case 1 -> args.add(inside(root, data.pick(NAMES)));
+                case 2 -> args.add(inside(root, data.text(40)));
+                default -> args.add(data.text(20).replace("..", "").replace("/", "_"));   // stays relative: no path
             }
         }
         if (args.stream().anyMatch(a -> !a.startsWith("-") && !a.startsWith(root.toString()) && !isValue(a))) {
             args.add(0, "--plan");        // a bare relative word would name a file in the working folder: only plan
+        }
+        if (args.contains("--study") && !args.contains("--report-dir")) {
+            args.add(0, root.resolve("site").toString());   // never the default build/reports/accuracy of the working folder
+            args.add(0, "--report-dir");
         }
         ByteArrayOutputStream out = new ByteArrayOutputStream(), err = new ByteArrayOutputStream();
         int status = Main.run(new ByteArrayInputStream(GOOD.getBytes(StandardCharsets.UTF_8)),
@@ -92,10 +173,16 @@ class CommandLineFuzzTest {
         assertFalse(e.lines().anyMatch(l -> l.startsWith("\tat ") || l.startsWith("Exception in thread") || l.startsWith("Caused by: ")),
                 "stack trace for " + args + ":\n" + e);
         assertTrue(e.isEmpty() || e.endsWith("\n"), "whole lines on stderr for " + args);
+        assertFalse(e.chars().anyMatch(ch -> ch == 0x1B), "no raw escape on stderr for " + args);
         assertArrayEquals(GOOD.getBytes(StandardCharsets.UTF_8), Files.readAllBytes(root.resolve("good.txt")), "good.txt intact: " + args);
         assertArrayEquals(BAD.getBytes(StandardCharsets.UTF_8), Files.readAllBytes(root.resolve("bad.txt")), "bad.txt intact: " + args);
         assertEquals(GOOD, Files.readString(root.resolve("@good.txt")), "@good.txt intact: " + args);
+        assertEquals(OBJ, Files.readString(root.resolve("model.obj")), "a scene's OBJ input intact: " + args);
+        assertEquals(MESH, Files.readString(root.resolve("mesh.txt")), "mesh.txt intact: " + args);
+        assertEquals("notes\n", Files.readString(root.resolve("notes.txt")), "notes.txt intact (behind notes-link.png): " + args);
+        assertArrayEquals(RO_PNG, Files.readAllBytes(root.resolve("ro.png")), "the read-only image intact: " + args);
         assertTrue(Files.isSymbolicLink(root.resolve("link.txt")), "link.txt still a link: " + args);
+        assertTrue(Files.isSymbolicLink(root.resolve("notes-link.png")), "notes-link.png still a link: " + args);
         try (Stream<Path> s = Files.walk(root, 2)) {
             assertEquals(List.of(), s.filter(p -> p.getFileName().toString().endsWith(".tmp")).toList(), "temporary files left: " + args);
         }

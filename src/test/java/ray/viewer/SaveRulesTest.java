@@ -64,12 +64,24 @@ class SaveRulesTest {
         assertTrue(Files.isDirectory(folder));
     }
 
+    /** The save follows the command line's rules (ray.io.OutputFile): a file that is no PNG, or a read-only one, is kept. */
+    @Test
+    void aFileThatIsNoPngIsKeptEvenAfterAskingToReplace(@TempDir Path dir) throws IOException {
+        Path notes = Files.writeString(dir.resolve("notes.txt"), "precious");
+        Path link = Files.createSymbolicLink(dir.resolve("out.png"), notes);
+        SaveRules.SaveException e = org.junit.jupiter.api.Assertions.assertThrows(SaveRules.SaveException.class,
+                () -> SaveRules.save(new Image(3, 2), link, dir.resolve("s.txt")));
+        assertEquals("Cannot save " + link + ": " + notes.toRealPath() + " (where " + link + " leads) is not a PNG image; it is left as it is "
+                + "(remove it, or name another file)", e.getMessage());
+        assertEquals("precious", Files.readString(notes));
+    }
+
     @Test
     void writesTheShownImageAsTheCommandLineWould(@TempDir Path dir) throws IOException, SaveRules.SaveException {
         Image img = new Image(3, 2);
         img.set(0, 0, 1, 0.5, 0.25);
         img.set(2, 1, 0.1, 2.0, -1);
-        Path old = Files.writeString(dir.resolve("out.png"), "precious");
+        Path old = Files.write(dir.resolve("out.png"), new byte[] {(byte) 0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n', 1});
         SaveRules.save(img, old, dir.resolve("s.txt"));
         ByteArrayOutputStream expected = new ByteArrayOutputStream();
         PngEncoder.write(img, expected);
