@@ -83,6 +83,14 @@ if [ -f "$APP_HOME/lib/raytracer.jsa" ] && [ -z "$RAYTRACER_NO_CDS" ]; then
     set -- "-XX:SharedArchiveFile=$APP_HOME/lib/raytracer.jsa" "-Xlog:cds*=off" "$@"
 fi
 
+# File names: the JVM decodes arguments and file names in the locale's character set, which under
+# LC_ALL=C (cron, containers) is ASCII, so `raytracer café.txt` became 'caf??.txt'. Where the locale's
+# set is not UTF-8, the JVM gets C.UTF-8 (a shell builtin case: no process start).
+case "${LC_ALL:-${LC_CTYPE:-$LANG}}" in
+    *[Uu][Tt][Ff]-8*|*[Uu][Tt][Ff]8*) ;;
+    *) LC_ALL=C.UTF-8; export LC_ALL ;;
+esac
+
 # The build's own JVM options: a constant the build writes here (quoted words, no path in it).
 eval "set -- $DEFAULT_JVM_OPTS \"\$@\""
 exec "$JAVACMD" "$@"

@@ -155,6 +155,10 @@ final class SceneJob {
             }
         }
         RenderSettings settings = main.renderSettings().resolve(scene);
+        String tooLarge = ray.settings.PixelBudget.refusal(scene.width, scene.height, settings.sampler());
+        if (tooLarge != null) {       // e.g. --sampler adaptive on an image the grid's budget admitted
+            return fail(name + ": " + tooLarge);
+        }
         RenderPlan plan;
         try {
             plan = RenderPlan.derive(scene, settings);   // the render's own plan: the renderer follows it

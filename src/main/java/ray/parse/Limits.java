@@ -12,13 +12,13 @@ public final class Limits {
     /** Largest Width or Height. */
     public static final int MAX_SIDE = 1 << 16;
     /** Bytes the renderer needs per pixel: linear RGB doubles, the 8-bit image and the PNG encoder's copy. */
-    public static final long BYTES_PER_PIXEL = 24 + 4 + 4;
+    public static final long BYTES_PER_PIXEL = ray.settings.PixelBudget.GRID_BYTES;
     /**
      * Most pixels one image can have whatever the heap: its RGB doubles live in one Java array (3 per
      * pixel, at most Integer.MAX_VALUE - 8 elements). Every other buffer is smaller: the PNG encoder
      * holds one band of rows at a time ({@code PngEncoder.largestBuffer}), never the whole image.
      */
-    public static final long MAX_ARRAY_PIXELS = (Integer.MAX_VALUE - 8) / 3;
+    public static final long MAX_ARRAY_PIXELS = ray.settings.PixelBudget.MAX_ARRAY_PIXELS;
     /** Longest line a scene file may have, in characters. */
     public static final int MAX_LINE = 1 << 16;
 

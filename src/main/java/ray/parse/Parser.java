@@ -627,17 +627,12 @@ public final class Parser {
         if (scene.camera == null) {
             throw error("no camera (expected a 'Camera Camera' object)");
         }
-        long pixels = (long) scene.width * scene.height;
-        if (pixels > Limits.maxPixels()) {
+        // the pixel limit of the scene's own sampler (a film costs more than the grid; the render checks
+        // again with a sampler the command line or the viewer chose: ray.render.Renderer)
+        String tooLarge = ray.settings.PixelBudget.refusal(scene.width, scene.height, scene.sampler);
+        if (tooLarge != null) {
             line = globalLines.get("Width");
-            // no heap helps beyond what one array can index: advise -Xmx only where it would be enough
-            String why = pixels > Limits.MAX_ARRAY_PIXELS
-                    ? String.format("at most %,d pixels, the most one image array holds whatever the heap", Limits.MAX_ARRAY_PIXELS)
-                    : String.format("at most %,d pixels, half of this JVM's %,d MiB heap at %d bytes a pixel; raise the heap, "
-                            + "e.g. JAVA_OPTS=-Xmx%dg", Limits.maxPixels(), Runtime.getRuntime().maxMemory() >> 20, Limits.BYTES_PER_PIXEL,
-                            Limits.heapGigabytesFor(pixels));
-            throw error(String.format("Width %d x Height %d = %,d pixels would need about %,d MiB (expected %s)",
-                    scene.width, scene.height, pixels, pixels * Limits.BYTES_PER_PIXEL >> 20, why));
+            throw error(tooLarge);
         }
         if (Double.isNaN(scene.camera.aspect)) {
             scene.camera.aspect = (double) scene.width / scene.height;

@@ -206,6 +206,10 @@ public final class Renderer {
     public Image render() {
         long t0 = System.nanoTime();
         RenderSettings s = settings.resolve(scene);
+        String tooLarge = ray.settings.PixelBudget.refusal(scene.width, scene.height, s.sampler());
+        if (tooLarge != null) {       // refused before anything is allocated for the image, whatever chose the sampler
+            throw new IllegalArgumentException(tooLarge);
+        }
         RenderPlan p = givenPlan != null && givenPlan.scene() == scene && givenPlan.settings().equals(s)
                 ? givenPlan : RenderPlan.derive(scene, s);
         if (!prepared || p != givenPlan) {

@@ -19,8 +19,20 @@ public abstract class AxialSurface extends Surface {
     public double radius = 1;
 
     /** The frame around {@code axis} and its length, derived by {@link #init()}. */
-    Frame frame = new Frame(0, 1, 0);
-    double height = 1;
+    // private: the parser lets a scene set any field that is not private, static or final, and these
+    // are derived by init() from base and axis (issue 17: they were listed as settable)
+    private Frame frame = new Frame(0, 1, 0);
+    private double height = 1;
+
+    /** The local frame (w along the axis), derived by {@link #init()}. */
+    final Frame frame() {
+        return frame;
+    }
+
+    /** The axis's length, derived by {@link #init()}. */
+    final double height() {
+        return height;
+    }
 
     @Override
     public void init() {

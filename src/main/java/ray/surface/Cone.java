@@ -33,8 +33,8 @@ public class Cone extends AxialSurface {
 
     @Override
     public boolean intersects(Ray ray, IntersectionRecord record, Scene scene) {
-        Frame f = frame;
-        double r = radius, h = height, k = r / h, kk = k * k;
+        Frame f = frame();
+        double r = radius, h = height(), k = r / h, kk = k * k;
         Vector3d o = ray.origin, dd = ray.direction;
         double ex = o.x - base.x, ey = o.y - base.y, ez = o.z - base.z;
         double ox = f.u(ex, ey, ez), oy = f.v(ex, ey, ez), oz = f.w(ex, ey, ez);
@@ -150,7 +150,7 @@ public class Cone extends AxialSurface {
 
     @Override
     double radiusAt(double z) {
-        return radius / height * (height - z);
+        return radius / height() * (height() - z);
     }
 
     @Override

@@ -31,8 +31,8 @@ public class Cylinder extends AxialSurface {
 
     @Override
     public boolean intersects(Ray ray, IntersectionRecord record, Scene scene) {
-        Frame f = frame;
-        double r = radius, h = height;
+        Frame f = frame();
+        double r = radius, h = height();
         Vector3d o = ray.origin, dd = ray.direction;
         double ex = o.x - base.x, ey = o.y - base.y, ez = o.z - base.z;
         double ox = f.u(ex, ey, ez), oy = f.v(ex, ey, ez), oz = f.w(ex, ey, ez);

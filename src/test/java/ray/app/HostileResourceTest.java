@@ -193,4 +193,31 @@ class HostileResourceTest {
         assertEquals(List.of("raytracer: --threads must be 1 to 1024, got 40000"), r.errLines());
         assertFalse(Files.exists(dir.resolve("s.png")));
     }
+
+    /**
+     * The pixel limit fits the sampler: an image the grid's budget admits is refused before anything is
+     * allocated when the scene or the command line asks for a film (jittered, sobol) or the adaptive
+     * sampler, with the sampler named.
+     */
+    @Test
+    void thePixelLimitFitsTheSampler() throws IOException {
+        long gridMax = Runtime.getRuntime().maxMemory() / 2 / ray.settings.PixelBudget.GRID_BYTES;
+        int side = (int) Math.sqrt(gridMax * 0.9);      // admitted by the grid, not by a film
+        String scene = "Width " + side + "\nHeight " + side + "\n\nCamera Camera\n";
+        Path adaptive = write("adaptive.txt", "Sampler adaptive\n" + scene);
+        Run r = MainBadInputTest.run("-q", adaptive.toString());
+        assertEquals(1, r.status());
+        assertTrue(r.err().startsWith(adaptive + ":2: Width " + side + " x Height " + side + " = ") && r.err().contains(" with the adaptive sampler "),
+                r.err());
+        Path grid = write("grid.txt", scene);
+        for (String sampler : List.of("jittered", "sobol", "adaptive")) {
+            Run o = MainBadInputTest.run("-q", "--sampler", sampler, grid.toString());
+            assertEquals(1, o.status(), sampler);
+            assertEquals(1, o.errLines().size(), o.err());
+            assertTrue(o.err().startsWith(grid + ": Width " + side + " x Height " + side + " = ") && o.err().contains(" with the " + sampler
+                    + " sampler (expected at most "), o.err());
+        }
+        assertEquals(0, plan(grid).status(), "the grid itself is admitted");
+        assertFalse(Files.exists(dir.resolve("grid.png")));
+    }
 }

@@ -133,4 +133,29 @@ class LauncherTest {
         assertTrue(r.err.contains("ray.test.tick = `touch${IFS}PWNED2`"), "passed literally: " + r.err);
         assertNothingRan();
     }
+
+    /**
+     * Under LC_ALL=C (cron, containers) a scene named café.txt renders: the launcher gives the JVM a UTF-8
+     * locale where the user's is not, so the name is not decoded as 'caf??.txt'. The name's bytes are made
+     * by the shell, whatever this test JVM's own encoding.
+     */
+    @Test
+    void aNonAsciiSceneNameRendersUnderTheCLocale() throws Exception {
+        Path script = installHome().resolve("bin/raytracer");
+        Path work = Files.createDirectories(dir.resolve("c-locale"));
+        ProcessBuilder pb = new ProcessBuilder("sh", "-c", "name=$(printf 'caf\\303\\251.txt'); printf 'Width 4\\nHeight 3\\n\\n"
+                + "Camera Camera\\n' > \"$name\"; LC_ALL=C LANG=C exec \"$0\" -q \"$name\"", script.toString()).directory(work.toFile());
+        pb.environment().remove("JAVA_OPTS");
+        pb.environment().remove("RAYTRACER_OPTS");
+        pb.environment().put("JAVA_HOME", System.getProperty("java.home"));
+        pb.redirectErrorStream(true);
+        Process p = pb.start();
+        String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        assertTrue(p.waitFor(60, TimeUnit.SECONDS));
+        assertEquals(0, p.exitValue(), out);
+        assertEquals("", out);
+        try (Stream<Path> s = Files.list(work)) {
+            assertEquals(1, s.filter(f -> f.getFileName().toString().endsWith(".png")).count(), "café.png written");
+        }
+    }
 }

@@ -68,4 +68,15 @@ class HostileClassTest {
         assertEquals("s.txt:4: Camera Camera: camera eye (1.0E308, 0.0, 0.0) and target (-1.0E308, 0.0, 0.0) are too far apart: "
                 + "their difference overflows a double (expected coordinates within about +-8.9e307)", m);
     }
+
+    /** Cylinder's and Cone's derived fields (frame, height) are not settable, nor listed as if they were. */
+    @Test
+    void derivedFieldsOfAxialSurfacesAreNotSettable() {
+        for (String cls : new String[] {"Cylinder", "Cone"}) {
+            String m = failure("Width 4\nHeight 3\n\nCamera Camera\n\nMaterial Diffuse d\n\nSurface " + cls + "\ndouble height 2\n"
+                    + "ref material d\n", Parser.class.getClassLoader());
+            assertEquals("s.txt:9: field 'height' of " + cls + " is private and cannot be set from a scene (expected one of: base, axis, "
+                    + "radius, material)", m);
+        }
+    }
 }

@@ -94,7 +94,8 @@ class ViewerXvfbTest {
         assertEquals(0, Main.run(new PrintStream(new ByteArrayOutputStream()), new PrintStream(err), scene.toString(), "-o", cliPng.toString()),
                 err::toString);
         BufferedImage expected = ImageIO.read(cliPng.toFile());
-        byte[] precious = "an existing file that must survive".getBytes(StandardCharsets.UTF_8);
+        // an earlier image (a PNG: a file that is no PNG is never replaced, asked or not) that must survive until the user agrees
+        byte[] precious = "\u0089PNG\r\n\u001a\nan earlier image that must survive".getBytes(StandardCharsets.ISO_8859_1);
         Path suggested = Files.write(dir.resolve("scene.png"), precious);     // where Save suggests writing
 
         Process viewer = startViewer(scene);
