@@ -86,20 +86,6 @@ class CommandLineProcessTest {
         return GOOD + "\nMaterial " + material + " m\n\nSurface Sphere\nVector3d center [0 0 0]\nref material m\n";
     }
 
-    private static final String MATERIAL = """
-            import javax.vecmath.Vector3d;
-            import ray.IntersectionRecord;
-            import ray.Ray;
-            import ray.Scene;
-            import ray.material.Material;
-
-            public class %s extends Material {
-                @Override
-                public Vector3d shade(Ray ray, IntersectionRecord record, Scene scene) {
-                    %s
-                }
-            }
-            """;
 
     /**
      * A class that calls System.exit(0) mid-render ends the program, but not with success: status 1 and
@@ -109,8 +95,8 @@ class CommandLineProcessTest {
     @Test
     void systemExitFromAUserClassIsNotASuccess() throws Exception {
         Path classes = compile(Map.of(
-                "Quitter", MATERIAL.formatted("Quitter", "System.exit(0);\n        return null;"),
-                "UsesHelper", MATERIAL.formatted("UsesHelper", "return Helper.color();"),
+                "Quitter", CLASS.formatted("Quitter", "", "System.exit(0);\n        return null;"),
+                "UsesHelper", CLASS.formatted("UsesHelper", "", "return Helper.color();"),
                 "Helper", "public class Helper { static javax.vecmath.Vector3d color() { return new javax.vecmath.Vector3d(1, 0, 0); } }"));
         Files.delete(classes.resolve("Helper.class"));
         Files.writeString(dir.resolve("helper.txt"), sceneWith("UsesHelper"));
