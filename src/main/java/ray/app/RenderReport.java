@@ -1,5 +1,6 @@
 package ray.app;
 
+import ray.Failures;
 import java.io.PrintStream;
 import ray.RayStats;
 import ray.Scene;

@@ -201,7 +201,7 @@ class CommandLineProcessTest {
             import ray.Ray;
             import ray.Scene;
             import ray.material.Material;
-            import ray.plan.Term;
+            import ray.material.Term;
 
             public class %s extends Material {
                 %s

@@ -26,7 +26,7 @@ import ray.Ray;
 import ray.Scene;
 import ray.app.MainBadInputTest.Run;
 import ray.material.Material;
-import ray.plan.Term;
+import ray.material.Term;
 
 /**
  * Issue 17 (the third round of hostile input), in-process: files never replaced unless asked (links
