@@ -50,11 +50,18 @@ final class SceneStudy {
         List<StudyRenderer.Result> firsts = new ArrayList<>();
         List<double[]> times = new ArrayList<>();
         List<Image> images = new ArrayList<>();
+        List<Setting> runs = new ArrayList<>();
         for (Setting s : list) {
+            for (int r = 0; r < repeats; r++) {
+                runs.add(s);
+            }
+        }
+        List<StudyRenderer.Result> results = renderer.renderAll(scene, runs);
+        for (int i = 0; i < list.size(); i++) {
             double[] seconds = new double[repeats];
             StudyRenderer.Result first = null;
             for (int r = 0; r < repeats; r++) {
-                StudyRenderer.Result res = renderer.render(scene, s);
+                StudyRenderer.Result res = results.get(i * repeats + r);
                 seconds[r] = res.seconds();
                 tick.rendered(pixels * res.meanSpp());
                 if (first == null) {

@@ -57,6 +57,11 @@ public final class Study {
                 + (fullSize ? ", every scene at its own size" : ", scenes over " + StudySettings.MAX_PIXELS + " pixels scaled down to that many"));
     }
 
+    /** The built-in renderer the command line's study uses, on {@code threads} threads. */
+    public static StudyRenderer localRenderer(int threads) {
+        return new RendererAdapter(threads);
+    }
+
     /** Renders scenes with more pixels than {@code n} at n pixels (same camera and aspect ratio). */
     public Study maxPixels(int n) {
         if (n < 1) {
@@ -131,6 +136,7 @@ public final class Study {
             bar.label = name;
             SceneStudy.Outcome o;
             try {
+                renderer.studying(parsed.get(i), scenes.get(i));
                 o = study.run(name, scenes.get(i), sizes.get(i)[0], sizes.get(i)[1], bar::advance);
             } catch (OutOfMemoryError e) {
                 bar.clear();

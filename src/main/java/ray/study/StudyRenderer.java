@@ -23,4 +23,20 @@ public interface StudyRenderer {
     java.util.List<String> samplers();
 
     Result render(Scene scene, Setting setting);
+
+    /**
+     * Renders each of {@code settings} in turn and returns the results in order. A renderer that runs
+     * renders elsewhere (raytracer-spark: one task each) renders them all at once.
+     */
+    default java.util.List<Result> renderAll(Scene scene, java.util.List<Setting> settings) {
+        java.util.List<Result> out = new java.util.ArrayList<>();
+        for (Setting s : settings) {
+            out.add(render(scene, s));
+        }
+        return out;
+    }
+
+    /** Told which scene file the next renders are of ({@code scene}: it parsed and fitted to the study's size). */
+    default void studying(java.nio.file.Path file, Scene scene) {
+    }
 }

@@ -1,0 +1,242 @@
+package ray.spark;
+
+import java.io.File;
+import java.io.PrintStream;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Set;
+import java.util.concurrent.Callable;
+import org.apache.spark.SparkConf;
+import org.apache.spark.api.java.JavaSparkContext;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import ray.app.RenderReport;
+import ray.settings.RenderOption;
+
+/**
+ * {@code raytracer-spark [--master URL] [-o DIR] scene.txt...}: {@code raytracer}'s render on an Apache
+ * Spark cluster (or embedded, {@code local[*]}), and {@code --study}, the accuracy study's renders as
+ * Spark tasks. Exit status 0 when every scene rendered, 1 when any failed, 2 for a bad command line.
+ * Works as the main class of {@code spark-submit} too (the master then comes from spark-submit).
+ */
+@Command(name = "raytracer-spark", mixinStandardHelpOptions = true, versionProvider = SparkMain.Version.class, sortOptions = false,
+        description = {"Renders each scene file to a PNG on an Apache Spark cluster: tiles as tasks, one job for all scenes.",
+                "The images are raytracer's, pixel for pixel. Default master: local[*] (this machine, no cluster needed)."},
+        exitCodeListHeading = "%nExit status:%n",
+        exitCodeList = {"0:every scene rendered", "1:a scene could not be read or rendered", "2:bad command line"})
+public final class SparkMain implements Callable<Integer> {
+
+    /** Tile side in pixels (docs/scale-out.md: measured, 64 balances task overhead against load balance). */
+    static final int DEFAULT_TILE = 64;
+
+    @Parameters(paramLabel = "SCENE", description = "scene files (.txt) to render")
+    List<Path> scenes = new ArrayList<>();
+
+    @Option(names = "--master", paramLabel = "URL", description = "the Spark master: local[*] (default), local[N], spark://host:7077, yarn, k8s://...")
+    String master;
+
+    @Option(names = {"-o", "--output"}, paramLabel = "DIR", description = "the folder the PNGs go into: a local folder or a Hadoop "
+            + "file system URI (hdfs://..., s3a://..., file:/...); default: beside each scene")
+    String output;
+
+    @Option(names = "--tile", paramLabel = "N", description = "tile side in pixels, one task a tile (default: ${DEFAULT-VALUE})")
+    int tile = DEFAULT_TILE;
+
+    @Option(names = {"-j", "--threads"}, paramLabel = "N", description = "render threads per task (default 1; also sets spark.task.cpus)")
+    int threads = 1;
+
+    @Option(names = "--sampler", paramLabel = "NAME", description = "grid, jittered, sobol or adaptive; overrides the scene's Sampler")
+    String sampler;
+
+    @Option(names = "--samples", paramLabel = "N", description = "N x N samples per pixel; overrides AASamples")
+    Integer samples;
+
+    @Option(names = "--target-error", paramLabel = "E", description = "adaptive: the target standard error in 8-bit steps; overrides TargetError")
+    Double targetError;
+
+    @Option(names = "--max-depth", paramLabel = "D", description = "mirror and refraction bounces followed; overrides MaxDepth")
+    Integer maxDepth;
+
+    @Option(names = "--cut-faint", description = "stop mirror paths whose remaining weight is below half an 8-bit step: faster, not exact")
+    boolean cutFaint;
+
+    @Option(names = {"-q", "--quiet"}, description = "print nothing but errors")
+    boolean quiet;
+
+    @Option(names = "--stats", description = "print parse (driver), build (executor), render and write times, rays by kind")
+    boolean stats;
+
+    @Option(names = "--json", description = "with --stats: JSON Lines on stdout (raytracer's keys, docs/json.md)")
+    boolean json;
+
+    @Option(names = "--allow-long", description = "render even a scene whose plan bounds it above 1e11 rays")
+    boolean allowLong;
+
+    @Option(names = "--conf", paramLabel = "KEY=VALUE", description = "a Spark setting (repeatable), e.g. --conf spark.ui.enabled=false")
+    List<String> conf = new ArrayList<>();
+
+    @Option(names = "--study", description = "the accuracy study (raytracer --study) with its renders as Spark tasks")
+    boolean study;
+
+    @Option(names = "--quick", description = "with --study: the smaller grid of settings")
+    boolean quick;
+
+    @Option(names = "--full-size", description = "with --study: every scene at its own size")
+    boolean fullSize;
+
+    @Option(names = "--report-dir", paramLabel = "DIR", description = "with --study: where the CSVs, plots and index.html go "
+            + "(default build/reports/accuracy)")
+    Path reportDir;
+
+    private PrintStream out = System.out;
+    private PrintStream err = System.err;
+
+    public static void main(String[] args) {
+        int status = run(System.out, System.err, args);
+        System.out.flush();
+        System.exit(status);
+    }
+
+    /** Runs the command line and returns the exit status (never exits the JVM). */
+    public static int run(PrintStream out, PrintStream err, String... args) {
+        SparkMain m = new SparkMain();
+        m.out = out;
+        m.err = err;
+        CommandLine cl = new CommandLine(m);
+        cl.setOut(new java.io.PrintWriter(out, true));
+        cl.setErr(new java.io.PrintWriter(err, true));
+        cl.setExpandAtFiles(false);
+        cl.setParameterExceptionHandler((e, a) -> {
+            err.println(RenderReport.oneLine("raytracer-spark: " + e.getMessage() + " (see raytracer-spark --help)"));
+            return 2;
+        });
+        return cl.execute(args);
+    }
+
+    /** What is wrong with the options, or null. */
+    String problem() {
+        if (scenes.isEmpty()) {
+            return "give scene files to render (see --help)";
+        }
+        if (tile < 1) {
+            return "--tile must be at least 1";
+        }
+        if (threads < 1) {
+            return "--threads must be at least 1";
+        }
+        // the ranges are raytracer's (one table: RenderOption)
+        if (sampler != null && RenderOption.SAMPLER.problem("--sampler", sampler) != null) {
+            return RenderOption.SAMPLER.problem("--sampler", sampler);
+        }
+        if (samples != null && RenderOption.SAMPLES.problem("--samples", samples) != null) {
+            return RenderOption.SAMPLES.problem("--samples", samples);
+        }
+        if (targetError != null && RenderOption.TARGET_ERROR.problem("--target-error", targetError) != null) {
+            return RenderOption.TARGET_ERROR.problem("--target-error", targetError);
+        }
+        if (maxDepth != null && RenderOption.MAX_DEPTH.problem("--max-depth", maxDepth) != null) {
+            return RenderOption.MAX_DEPTH.problem("--max-depth", maxDepth);
+        }
+        if (json && !stats) {
+            return "--json goes with --stats";
+        }
+        if (study && output != null) {
+            return "--study writes its report to --report-dir, not --output";
+        }
+        for (String c : conf) {
+            if (c.indexOf('=') <= 0) {
+                return "--conf takes KEY=VALUE, got '" + c + "'";
+            }
+        }
+        if (!study) {
+            Set<String> names = new LinkedHashSet<>();
+            for (Path p : scenes) {
+                String target = output == null ? p.toAbsolutePath().normalize().resolveSibling(Output.pngName(p)).toString() : Output.pngName(p);
+                if (!names.add(target)) {
+                    return "two scenes would write the same image " + target + (output == null ? "" : " in " + output);
+                }
+            }
+        }
+        return null;
+    }
+
+    @Override
+    public Integer call() {
+        String problem = problem();
+        if (problem != null) {
+            err.println(RenderReport.oneLine("raytracer-spark: " + problem));
+            return 2;
+        }
+        try (JavaSparkContext jsc = new JavaSparkContext(sparkConf())) {
+            if (study) {
+                return StudyJob.run(jsc, scenes, quick, fullSize, reportDir != null ? reportDir : Path.of("build", "reports", "accuracy"),
+                        threads, out, err, !quiet && RenderReport.stderrIsTerminal());
+            }
+            RenderJob.Options o = new RenderJob.Options(output, tile, threads,
+                    overrides(0), quiet, stats, json, allowLong);
+            return new RenderJob(jsc, o, out, err, RenderReport.stderrIsTerminal()).run(scenes);
+        }
+    }
+
+    /** The render options given, for each scene to resolve ({@code maxPixels}: the study's size limit, 0 for none). */
+    SceneBundle.Overrides overrides(int maxPixels) {
+        return new SceneBundle.Overrides(sampler, samples, targetError, maxDepth, cutFaint, maxPixels);
+    }
+
+    /**
+     * Spark's settings: spark.* system properties first (what spark-submit passes), then --master (default
+     * local[*]) and --conf; on a cluster, the jars this program runs from are listed in spark.jars so the
+     * executors load its classes from the same jars.
+     */
+    SparkConf sparkConf() {
+        SparkConf c = new SparkConf().setAppName("raytracer-spark");
+        if (master != null) {
+            c.setMaster(master);
+        } else if (!c.contains("spark.master")) {
+            c.setMaster("local[*]");
+        }
+        for (String kv : conf) {
+            int eq = kv.indexOf('=');
+            c.set(kv.substring(0, eq), kv.substring(eq + 1));
+        }
+        if (threads > 1 && !c.contains("spark.task.cpus")) {
+            c.set("spark.task.cpus", Integer.toString(threads));
+        }
+        if (!c.get("spark.master").startsWith("local")) {
+            if (!c.contains("spark.jars")) {
+                c.set("spark.jars", String.join(",", ownJars()));
+            }
+            // Spark's module options for executors include ones newer JDKs know (--sun-misc-unsafe-memory-access):
+            // a Java 17 executor refuses to start on them unless told to ignore what it does not know
+            if (!c.contains("spark.executor.defaultJavaOptions")) {
+                c.set("spark.executor.defaultJavaOptions", "-XX:+IgnoreUnrecognizedVMOptions");
+            }
+        }
+        return c;
+    }
+
+    /** The jars of the ray tracer and the libraries it needs that Spark does not bring (not Spark's own). */
+    static List<String> ownJars() {
+        Set<String> jars = new LinkedHashSet<>();
+        for (Class<?> c : new Class<?>[] {SparkMain.class, ray.Scene.class, javax.vecmath.Vector3d.class, picocli.CommandLine.class,
+                de.javagl.obj.Obj.class}) {
+            java.security.CodeSource src = c.getProtectionDomain().getCodeSource();
+            if (src != null && src.getLocation() != null && src.getLocation().getPath().endsWith(".jar")) {
+                jars.add(new File(src.getLocation().getPath()).getAbsolutePath());
+            }
+        }
+        return new ArrayList<>(jars);
+    }
+
+    static final class Version implements CommandLine.IVersionProvider {
+        @Override
+        public String[] getVersion() {
+            return new String[] {"raytracer-spark (Spark " + org.apache.spark.package$.MODULE$.SPARK_VERSION() + ", Java "
+                    + System.getProperty("java.version") + ")"};
+        }
+    }
+}

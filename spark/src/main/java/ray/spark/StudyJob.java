@@ -1,0 +1,171 @@
+package ray.spark;
+
+import java.io.IOException;
+import java.io.PrintStream;
+import java.io.Serializable;
+import java.io.UncheckedIOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
+import org.apache.spark.api.java.JavaSparkContext;
+import org.apache.spark.api.java.function.Function;
+import org.apache.spark.broadcast.Broadcast;
+import ray.RayStats;
+import ray.Scene;
+import ray.render.Image;
+import ray.study.Setting;
+import ray.study.Study;
+import ray.study.StudyRenderer;
+import ray.study.StudySettings;
+
+/**
+ * {@code raytracer-spark --study}: {@code raytracer --study} (ray.study: the same settings, reference,
+ * errors, CSVs, plots and index.html) with its renders run as Spark tasks: each scene's (setting, repeat)
+ * renders as the tasks of one job, each timed inside its task on the executor that ran it; the warm-up
+ * and the reference's renders one task each.
+ */
+final class StudyJob {
+
+    private StudyJob() {
+    }
+
+    static int run(JavaSparkContext jsc, List<Path> scenes, boolean quick, boolean fullSize, Path dir, int threads, PrintStream out,
+                   PrintStream err, boolean progress) {
+        SparkStudyRenderer renderer = new SparkStudyRenderer(jsc, threads, fullSize ? 0 : StudySettings.MAX_PIXELS);
+        Study s = new Study(renderer, quick ? StudySettings.QUICK : StudySettings.FULL, 3, out, err, progress);
+        if (fullSize) {
+            s.maxPixels(Integer.MAX_VALUE);
+        }
+        String mode = (quick ? "quick settings" : "full settings")
+                + (fullSize ? ", every scene at its own size" : ", scenes over " + StudySettings.MAX_PIXELS + " pixels scaled down to that many")
+                + "; rendered by raytracer-spark on " + jsc.master() + ": each render's wall time was measured inside its Spark task on the "
+                + "executor that ran it (" + threads + " render thread(s) a task), so the times come from different machines and compare "
+                + "only as far as the cluster's machines are alike";
+        try {
+            return s.run(scenes, dir, mode);
+        } finally {
+            renderer.close();
+        }
+    }
+
+    /** One render of the study: the setting's fields (Setting itself is not serializable). */
+    record Render(String sampler, String label, int ns, double targetError, int maxDepth, int seed) implements Serializable {
+        static Render of(Setting s) {
+            return new Render(s.sampler(), s.label(), s.ns(), s.targetError(), s.maxDepth(), s.seed());
+        }
+
+        Setting setting() {
+            return new Setting(sampler, label, ns, targetError, maxDepth, seed);
+        }
+    }
+
+    /** What a task sends back: the result's parts (the study's records are not serializable), and where it ran. */
+    record Rendered(Image image, double seconds, RayStats rays, double meanSpp, double rmse, double low, double high, double probeSpp,
+                    boolean estimated, String failure) implements Serializable {
+        StudyRenderer.Result result() {
+            return new StudyRenderer.Result(image, seconds, rays, meanSpp, estimated
+                    ? new StudyRenderer.Estimate(rmse, low, high, probeSpp) : StudyRenderer.Estimate.NONE);
+        }
+    }
+
+    /**
+     * Renders one setting on an executor with the built-in study renderer, as {@code raytracer --study}
+     * does (the time is the renderer's own: BVH build and render, not parsing). Each task parses its own
+     * copy of the scene, since renders with different settings prepare it differently; each JVM first
+     * renders every scene once untimed, so the JIT has compiled the render path before anything is timed.
+     */
+    static final class RenderTask implements Function<Render, Rendered> {
+        private static final long serialVersionUID = 1L;
+        private static final Set<String> WARM = ConcurrentHashMap.newKeySet();
+        private final Broadcast<SceneBundle> bundle;
+        private final int threads;
+
+        RenderTask(Broadcast<SceneBundle> bundle, int threads) {
+            this.bundle = bundle;
+            this.threads = threads;
+        }
+
+        @Override
+        public Rendered call(Render r) {
+            SceneBundle b = bundle.value();
+            StudyRenderer local = Study.localRenderer(threads);
+            try {
+                if (WARM.add(b.key)) {
+                    Scene warm = b.parse();
+                    local.render(warm, new Setting("grid", "warm-up", 1, 0, r.maxDepth()));
+                }
+                StudyRenderer.Result res = local.render(b.parse(), r.setting());
+                StudyRenderer.Estimate e = res.estimate();
+                return new Rendered(res.image(), res.seconds(), res.rays(), res.meanSpp(), e.rmseSteps(), e.lowSteps(), e.highSteps(),
+                        e.samplesPerPixel(), e != StudyRenderer.Estimate.NONE, null);
+            } catch (OutOfMemoryError e) {
+                throw e;
+            } catch (Throwable e) {   // a user's class: the same on any retry
+                return new Rendered(null, 0, null, 0, 0, 0, 0, 0, false, ray.app.RenderReport.failure(e));
+            }
+        }
+    }
+
+    /** The study's renderer: renders as Spark tasks, the scene shipped once per executor. */
+    static final class SparkStudyRenderer implements StudyRenderer {
+        private final JavaSparkContext jsc;
+        private final int threads, maxPixels;
+        private Broadcast<SceneBundle> current;
+
+        SparkStudyRenderer(JavaSparkContext jsc, int threads, int maxPixels) {
+            this.jsc = jsc;
+            this.threads = threads;
+            this.maxPixels = maxPixels;
+        }
+
+        @Override
+        public List<String> samplers() {
+            return Study.localRenderer(threads).samplers();
+        }
+
+        @Override
+        public void studying(Path file, Scene scene) {
+            close();
+            try {
+                current = jsc.broadcast(SceneBundle.of(file, scene, new SceneBundle.Overrides(null, null, null, null, false, maxPixels)));
+            } catch (IOException e) {
+                throw new UncheckedIOException(file + ": cannot read the scene's files: " + e.getMessage(), e);
+            }
+        }
+
+        @Override
+        public Result render(Scene scene, Setting setting) {
+            return renderAll(scene, List.of(setting)).get(0);
+        }
+
+        @Override
+        public List<Result> renderAll(Scene scene, List<Setting> settings) {
+            if (current == null) {
+                throw new IllegalStateException("studying(file, scene) was not called");
+            }
+            List<Render> renders = new ArrayList<>();
+            for (Setting s : settings) {
+                renders.add(Render.of(s));
+            }
+            jsc.setJobDescription("raytracer-spark --study: " + current.value().name + ", " + renders.size() + " render(s)");
+            List<Rendered> done = jsc.parallelize(renders, renders.size()).map(new RenderTask(current, threads)).collect();
+            List<Result> out = new ArrayList<>();
+            for (Rendered r : done) {
+                if (r.failure() != null) {
+                    throw new IllegalStateException(r.failure());   // the study reports the scene as failed and goes on
+                }
+                out.add(r.result());
+            }
+            return out;
+        }
+
+        void close() {
+            if (current != null) {
+                current.destroy();
+                current = null;
+            }
+        }
+    }
+}
