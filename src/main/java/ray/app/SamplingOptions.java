@@ -13,7 +13,7 @@ import ray.settings.RenderSettings;
  * {@link RenderSettings} value that every mode (render, {@code --plan}, {@code --view}) resolves
  * against each scene. Their ranges are {@link RenderOption}'s.
  */
-final class SamplingOptions {
+public final class SamplingOptions {
 
     @Option(names = "--sampler", paramLabel = "NAME", description = "grid (the scene format's, default), jittered, sobol or adaptive; "
             + "overrides the scene's Sampler")
@@ -30,7 +30,7 @@ final class SamplingOptions {
     Integer maxDepth;
 
     /** What is wrong with the options, or null. */
-    String problem() {
+    public String problem() {
         if (sampler != null && RenderOption.SAMPLER.problem("--sampler", sampler) != null) {
             return RenderOption.SAMPLER.problem("--sampler", sampler);
         }
@@ -47,7 +47,7 @@ final class SamplingOptions {
     }
 
     /** The options given, as settings that override a scene's globals (check {@link #problem()} first). */
-    RenderSettings settings() {
+    public RenderSettings settings() {
         RenderSettings s = new RenderSettings();
         if (sampler != null) {
             s = s.sampler(sampler);

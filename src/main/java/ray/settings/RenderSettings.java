@@ -18,7 +18,9 @@ import ray.Scene;
  * RenderSummary what = r.summary();    // time, rays by kind, mean spp, estimated RMSE
  * </pre>
  */
-public final class RenderSettings {
+public final class RenderSettings implements java.io.Serializable {
+
+    private static final long serialVersionUID = 1L;
 
     private static final int UNSET = -1;
 

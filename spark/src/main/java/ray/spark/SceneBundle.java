@@ -43,30 +43,11 @@ final class SceneBundle implements Serializable {
     final String key;
 
     /**
-     * The command line's render options (null: the scene's own global) as {@code raytracer} takes them,
-     * and the study's pixel limit (0: none).
+     * The command line's render options as {@code raytracer} reads them (unset: the scene's own global) and
+     * the study's pixel limit (0: none).
      */
-    record Overrides(String sampler, Integer samples, Double targetError, Integer maxDepth, boolean cutFaint, int maxPixels)
-            implements Serializable {
-        static final Overrides NONE = new Overrides(null, null, null, null, false, 0);
-
-        /** The render settings they give, for each scene to resolve against its globals. */
-        RenderSettings settings() {
-            RenderSettings s = new RenderSettings().cutFaint(cutFaint);
-            if (sampler != null) {
-                s = s.sampler(sampler);
-            }
-            if (samples != null) {
-                s = s.samples(samples);
-            }
-            if (targetError != null) {
-                s = s.targetError(targetError);
-            }
-            if (maxDepth != null) {
-                s = s.maxDepth(maxDepth);
-            }
-            return s;
-        }
+    record Overrides(RenderSettings settings, int maxPixels) implements Serializable {
+        static final Overrides NONE = new Overrides(new RenderSettings(), 0);
 
         /** Fits a freshly parsed scene to the study's size (the study's renders only). */
         void fit(Scene s) {

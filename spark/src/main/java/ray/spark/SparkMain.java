@@ -15,7 +15,7 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import ray.app.RenderReport;
-import ray.settings.RenderOption;
+import ray.app.SamplingOptions;
 
 /**
  * {@code raytracer-spark [--master URL] [-o DIR] scene.txt...}: {@code raytracer}'s render on an Apache
@@ -49,17 +49,9 @@ public final class SparkMain implements Callable<Integer> {
     @Option(names = {"-j", "--threads"}, paramLabel = "N", description = "render threads per task (default 1; also sets spark.task.cpus)")
     int threads = 1;
 
-    @Option(names = "--sampler", paramLabel = "NAME", description = "grid, jittered, sobol or adaptive; overrides the scene's Sampler")
-    String sampler;
-
-    @Option(names = "--samples", paramLabel = "N", description = "N x N samples per pixel; overrides AASamples")
-    Integer samples;
-
-    @Option(names = "--target-error", paramLabel = "E", description = "adaptive: the target standard error in 8-bit steps; overrides TargetError")
-    Double targetError;
-
-    @Option(names = "--max-depth", paramLabel = "D", description = "mirror and refraction bounces followed; overrides MaxDepth")
-    Integer maxDepth;
+    /** --sampler, --samples, --target-error, --max-depth: raytracer's own options, with its checks. */
+    @CommandLine.Mixin
+    SamplingOptions sampling = new SamplingOptions();
 
     @Option(names = "--cut-faint", description = "stop mirror paths whose remaining weight is below half an 8-bit step: faster, not exact")
     boolean cutFaint;
@@ -128,18 +120,8 @@ public final class SparkMain implements Callable<Integer> {
         if (threads < 1) {
             return "--threads must be at least 1";
         }
-        // the ranges are raytracer's (one table: RenderOption)
-        if (sampler != null && RenderOption.SAMPLER.problem("--sampler", sampler) != null) {
-            return RenderOption.SAMPLER.problem("--sampler", sampler);
-        }
-        if (samples != null && RenderOption.SAMPLES.problem("--samples", samples) != null) {
-            return RenderOption.SAMPLES.problem("--samples", samples);
-        }
-        if (targetError != null && RenderOption.TARGET_ERROR.problem("--target-error", targetError) != null) {
-            return RenderOption.TARGET_ERROR.problem("--target-error", targetError);
-        }
-        if (maxDepth != null && RenderOption.MAX_DEPTH.problem("--max-depth", maxDepth) != null) {
-            return RenderOption.MAX_DEPTH.problem("--max-depth", maxDepth);
+        if (sampling.problem() != null) {
+            return sampling.problem();
         }
         if (json && !stats) {
             return "--json goes with --stats";
@@ -184,7 +166,7 @@ public final class SparkMain implements Callable<Integer> {
 
     /** The render options given, for each scene to resolve ({@code maxPixels}: the study's size limit, 0 for none). */
     SceneBundle.Overrides overrides(int maxPixels) {
-        return new SceneBundle.Overrides(sampler, samples, targetError, maxDepth, cutFaint, maxPixels);
+        return new SceneBundle.Overrides(sampling.settings().cutFaint(cutFaint), maxPixels);
     }
 
     /**

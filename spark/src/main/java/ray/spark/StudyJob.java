@@ -129,7 +129,7 @@ final class StudyJob {
         public void studying(Path file, Scene scene) {
             close();
             try {
-                current = jsc.broadcast(SceneBundle.of(file, scene, new SceneBundle.Overrides(null, null, null, null, false, maxPixels)));
+                current = jsc.broadcast(SceneBundle.of(file, scene, new SceneBundle.Overrides(new ray.settings.RenderSettings(), maxPixels)));
             } catch (IOException e) {
                 throw new UncheckedIOException(file + ": cannot read the scene's files: " + e.getMessage(), e);
             }

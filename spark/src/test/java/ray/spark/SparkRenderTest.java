@@ -16,6 +16,7 @@ import java.util.List;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.stream.Stream;
 import org.apache.spark.SparkConf;
+import ray.settings.RenderSettings;
 import org.apache.spark.api.java.JavaSparkContext;
 import org.apache.spark.scheduler.SparkListener;
 import org.apache.spark.scheduler.SparkListenerJobStart;
@@ -134,7 +135,8 @@ class SparkRenderTest {
 
     static RenderJob.Options options(Path dir, int tile, int threads, String sampler) {
         return new RenderJob.Options(dir == null ? null : dir.toString(), tile, threads,
-                new SceneBundle.Overrides(sampler, null, sampler.equals("adaptive") ? 1.0 : null, null, false, 0), false, false, false, false);
+                new SceneBundle.Overrides(sampler.equals("adaptive") ? new RenderSettings().sampler(sampler).targetError(1)
+                        : new RenderSettings().sampler(sampler), 0), false, false, false, false);
     }
 
     /** The PNG raytracer itself writes for {@code scene} (into {@code dir}). */
