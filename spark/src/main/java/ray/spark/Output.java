@@ -10,6 +10,7 @@ import org.apache.hadoop.conf.Configuration;
 import org.apache.hadoop.fs.FileSystem;
 import ray.render.Image;
 import ray.render.PngEncoder;
+import ray.io.OutputFile;
 import ray.render.PngWriter;
 
 /**
@@ -34,14 +35,19 @@ abstract class Output {
         return name.matches("[A-Za-z][A-Za-z0-9+.-]+:/.*");
     }
 
-    /** The PNG of {@code scene} in {@code dir} (null: beside the scene), prepared (checked) now. */
-    static Output prepare(Path scene, String dir, Configuration hadoop) throws IOException {
+    /**
+     * The PNG of {@code scene} in {@code dir} (null: beside the scene), prepared (checked) now; a local
+     * image may not replace a file the scene reads ({@code reads}).
+     */
+    static Output prepare(Path scene, String dir, Configuration hadoop, java.util.Collection<Path> reads) throws IOException {
         String file = pngName(scene);
         if (dir != null && isUri(dir)) {
             return new Hadoop(new org.apache.hadoop.fs.Path(new org.apache.hadoop.fs.Path(URI.create(dir)), file), hadoop);
         }
         Path target = dir == null ? scene.resolveSibling(file) : Path.of(dir).resolve(file);
-        return new Local(target, PngWriter.prepare(target));
+        OutputFile.Pending pending = PngWriter.prepare(target);
+        pending.protect(reads);
+        return new Local(target, pending);
     }
 
     /** a.txt -> a.png (another extension: the name + .png). */
@@ -65,9 +71,9 @@ abstract class Output {
 
     private static final class Local extends Output {
         private final Path target;
-        private final PngWriter.Pending pending;
+        private final OutputFile.Pending pending;
 
-        Local(Path target, PngWriter.Pending pending) {
+        Local(Path target, OutputFile.Pending pending) {
             this.target = target;
             this.pending = pending;
         }
@@ -79,7 +85,7 @@ abstract class Output {
 
         @Override
         void commit(Image image) throws IOException {
-            pending.commit(image);
+            pending.commit(PngWriter.png(image));
         }
 
         @Override

@@ -252,7 +252,7 @@ final class RenderJob {
         }
         Output output;
         try {
-            output = Output.prepare(p, o.outputDir(), jsc.hadoopConfiguration());
+            output = Output.prepare(p, o.outputDir(), jsc.hadoopConfiguration(), ray.io.InputFiles.of(scene));
         } catch (IOException | RuntimeException e) {
             err.println(RenderReport.oneLine(name + ": cannot write the image: " + RenderReport.message(e)));
             return null;
