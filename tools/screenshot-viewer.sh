@@ -2,7 +2,9 @@
 # Photographs the viewer for the README: opens a scene (default scenes/showcase.txt) in the installed
 # launcher on a throw-away X server, waits until the render is done, and writes the window as a PNG
 # (default docs/images/viewer.png). Needs Xvfb, xdotool and ImageMagick (Debian: xvfb xdotool imagemagick);
-# runs `gradle installDist` first if the launcher is not built.
+# runs `gradle installDist` first if the launcher is not built. Once the render is done, VIEWER_KEYS (xdotool
+# key names, e.g. "ctrl+4" for the difference to the scene's reference image) are pressed and the pointer is
+# put at VIEWER_POINTER ("x y" in the window) so the pixel readout shows, before the picture is taken.
 #   tools/screenshot-viewer.sh [out.png] [scene.txt]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -48,6 +50,25 @@ for _ in $(seq 1 600); do
     prev=$sum
     [ "$same" -ge 4 ] && break
 done
+wait_still() {
+    prev=""; same=0
+    for _ in $(seq 1 200); do
+        sleep 0.25
+        sum=$(import -window "$win" ppm:- | md5sum)
+        if [ "$sum" = "$prev" ]; then same=$((same + 1)); else same=0; fi
+        prev=$sum
+        [ "$same" -ge 4 ] && break
+    done
+}
+if [ -n "${VIEWER_KEYS:-}${VIEWER_POINTER:-}" ]; then
+    xdotool mousemove --window "$win" 60 60 click 1    # no window manager: a click gives the window the keyboard
+    sleep 0.5
+    # shellcheck disable=SC2086
+    [ -z "${VIEWER_KEYS:-}" ] || xdotool key --delay 150 $VIEWER_KEYS
+    # shellcheck disable=SC2086
+    [ -z "${VIEWER_POINTER:-}" ] || xdotool mousemove --window "$win" $VIEWER_POINTER
+    wait_still
+fi
 mkdir -p "$(dirname "$out")"
 import -window "$win" -strip "png:$out"
 echo "wrote $out"

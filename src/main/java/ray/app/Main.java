@@ -69,7 +69,7 @@ public final class Main implements Callable<Integer> {
     @Option(names = "--allow-long", description = "render even a scene whose plan bounds it above 1e11 rays (refused otherwise)")
     boolean allowLong;
 
-    @Option(names = "--view", description = "open the viewer on the (first) scene instead of writing a PNG")
+    @Option(names = "--view", description = "open the viewer on the scene (a window for each) instead of writing a PNG")
     boolean view;
 
     /** Most render threads: more only cost memory and start-up (each a thread of its own, with its stack). */
@@ -419,7 +419,7 @@ public final class Main implements Callable<Integer> {
                     : "DISPLAY=" + display + " does not answer") + ");")));
             return 2;
         }
-        ray.viewer.ViewingFrame.open(scenes.isEmpty() ? null : scenes.get(0), renderSettings());
+        ray.viewer.ViewingFrame.open(scenes, renderSettings());
         return VIEWER_OPEN;
     }
 

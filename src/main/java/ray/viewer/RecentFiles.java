@@ -1,5 +1,6 @@
 package ray.viewer;
 
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -8,7 +9,8 @@ import java.util.prefs.Preferences;
 
 /**
  * The scenes opened last, newest first, at most {@value #MAX}, kept in the user's preferences
- * ({@link Preferences}, so they survive a restart) as absolute paths. A preferences store that cannot
+ * ({@link Preferences}, so they survive a restart) as absolute paths. Files that no longer exist are
+ * left out of the list and dropped from the store ({@link #prune}). A preferences store that cannot
  * be written only means the list is not remembered.
  */
 final class RecentFiles {
@@ -25,7 +27,27 @@ final class RecentFiles {
         return new RecentFiles(Preferences.userRoot().node("raytracer/viewer/recent"));
     }
 
+    /** The remembered files that still exist, newest first; the missing ones are dropped from the store. */
     List<Path> list() {
+        List<Path> all = stored(), out = new ArrayList<>();
+        for (Path p : all) {
+            if (Files.isRegularFile(p)) {
+                out.add(p);
+            }
+        }
+        if (out.size() != all.size()) {
+            store(out);
+        }
+        return out;
+    }
+
+    /** Drops the files that no longer exist; returns how many. */
+    int prune() {
+        int before = stored().size();
+        return before - list().size();
+    }
+
+    private List<Path> stored() {
         List<Path> out = new ArrayList<>();
         for (int i = 0; i < MAX; i++) {
             String p = node.get(Integer.toString(i), null);
@@ -44,7 +66,7 @@ final class RecentFiles {
     /** Puts {@code file} first (once), dropping the oldest beyond {@value #MAX}. */
     void add(Path file) {
         Path abs = file.toAbsolutePath().normalize();
-        List<Path> l = list();
+        List<Path> l = stored();
         l.remove(abs);
         l.add(0, abs);
         store(l);

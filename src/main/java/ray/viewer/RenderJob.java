@@ -29,6 +29,9 @@ public final class RenderJob {
     /** The render's settings, resolved against the scene (null until it is read). */
     volatile RenderSettings settings;
     volatile WorkProgress progress;
+    /** The finished tiles so far (black elsewhere), copied as each tile ends: the window's and a partial save's image. */
+    volatile Image partial;
+    boolean stoppedWhileRendering;
     private State state = State.PARSING;
     long parseNanos;
     long renderNanos;
@@ -81,6 +84,21 @@ public final class RenderJob {
     /** The finished image (null unless {@link State#DONE}). */
     public Image image() {
         return image;
+    }
+
+    /** The image rendered so far: finished tiles, black elsewhere (null before the render starts). */
+    public Image partialImage() {
+        return partial;
+    }
+
+    /** True when this job was stopped part way: what it can save is {@link #partialImage()}, named as partial. */
+    public boolean partial() {
+        return state == State.STOPPED && stoppedWhileRendering;
+    }
+
+    /** What Save writes for this job: the finished image, or the partial one of a stopped render. */
+    public Image imageToSave() {
+        return image != null ? image : partial() ? partial : null;
     }
 
     /** The whole error, e.g. {@code scene.txt:12: Sphere has no field 'radus' (...)} (null unless failed). */

@@ -43,8 +43,8 @@ public final class RenderSession {
         }
 
         /**
-         * {@code job} ended: done, stopped or failed. After a failed render {@link #shown()} is again the
-         * last finished image (or null), which the window puts back.
+         * {@code job} ended: done, stopped or failed. After a failure {@link #shown()} is the last finished
+         * image of the same file, which the window puts back, or null (the window then shows none).
          */
         default void ended(RenderJob job) {
         }
@@ -85,9 +85,22 @@ public final class RenderSession {
         return shown;
     }
 
-    /** True when a finished image is on screen: the only state in which saving makes sense. */
+    /**
+     * What Save writes now: the finished job whose image is on screen, or a render stopped part way whose
+     * finished tiles are on screen (saved as a partial image, {@link RenderJob#partial()}); null when
+     * there is nothing (nothing read yet, a render running, a failure).
+     */
+    public RenderJob saveable() {
+        if (shown != null) {
+            return shown;
+        }
+        RenderJob c = current;
+        return c != null && c.state() == RenderJob.State.STOPPED && c.stoppedWhileRendering ? c : null;
+    }
+
+    /** True when there is an image to save ({@link #saveable()}). */
     public boolean canSave() {
-        return shown != null;
+        return saveable() != null;
     }
 
     public boolean busy() {
@@ -115,6 +128,7 @@ public final class RenderSession {
         job.cancel();
         if (job.state() == RenderJob.State.RENDERING) {
             shown = null;                 // the partial image of the stopped render is on screen
+            job.stoppedWhileRendering = true;
         }
         job.state(RenderJob.State.STOPPED);
         view.ended(job);
@@ -128,13 +142,13 @@ public final class RenderSession {
         try {
             scene = Parser.parse(job.file, job.warnings);
         } catch (SceneFormatException e) {
-            fail(job, e.getMessage(), false);
+            fail(job, e.getMessage());
             return;
         } catch (OutOfMemoryError e) {
-            fail(job, job.file + ": the scene is too large for this JVM's heap (raise it, e.g. JAVA_OPTS=-Xmx16g)", false);
+            fail(job, job.file + ": the scene is too large for this JVM's heap (raise it, e.g. JAVA_OPTS=-Xmx16g)");
             return;
         } catch (Throwable e) {     // a user class's init() (any Error too) or a parser bug: the job must end, never hang
-            fail(job, Failures.describe(job.file + ": reading the scene failed", e), false);
+            fail(job, Failures.describe(job.file + ": reading the scene failed", e));
             return;
         }
         job.parseNanos = System.nanoTime() - t0;
@@ -159,13 +173,23 @@ public final class RenderSession {
                 view.tile(job, (Image) t[0], r[0], r[1], r[2], r[3]);
             }
         };
+        Image partial = new Image(scene.width, scene.height);
         ProgressListener tiles = new ProgressListener() {
             @Override
             public void tileDone(Image image, int x0, int y0, int x1, int y1, int done, int total) {
                 if (!started.getAndSet(true)) {
                     job.planSummary = PlanSummary.of(renderer.plan());     // the render's own plan, derived before the first tile
                 }
-                finished.add(new Object[] {image, new int[] {x0, y0, x1, y1}});
+                if (job.cancelled) {
+                    return;                  // stopped: the partial image keeps what the window was given
+                }
+                // the finished tile, copied at once (a progressive render's next pass rewrites the render's
+                // own image): the window shows, and a stopped render saves, finished tiles only
+                for (int y = y0; y < y1; y++) {
+                    int i = 3 * (y * image.width + x0);
+                    System.arraycopy(image.rgb, i, partial.rgb, i, 3 * (x1 - x0));
+                }
+                finished.add(new Object[] {partial, new int[] {x0, y0, x1, y1}});
                 if (!drainPosted.getAndSet(true)) {
                     post(job, drain);
                 }
@@ -174,6 +198,7 @@ public final class RenderSession {
         job.progress = WorkProgress.of(scene, settings, tiles);
         renderer.listener(job.progress);
         job.scene = scene;
+        job.partial = partial;
         job.renderer = renderer;
         if (job.cancelled) {              // stop() came between the check above and the renderer being set
             return;
@@ -198,19 +223,19 @@ public final class RenderSession {
         } catch (RenderCancelledException e) {
             // stop() or a newer job: already reported
         } catch (OutOfMemoryError e) {
-            fail(job, job.file + ": out of memory while rendering (raise the heap, e.g. JAVA_OPTS=-Xmx16g)", true);
+            fail(job, job.file + ": out of memory while rendering (raise the heap, e.g. JAVA_OPTS=-Xmx16g)");
         } catch (Throwable e) {     // whatever a user's class throws (AssertionError, a checked one sneakily): never a hang
-            fail(job, Failures.describe(job.file + ": rendering failed", e), true);
+            fail(job, Failures.describe(job.file + ": rendering failed", e));
         }
     }
 
-    private void fail(RenderJob job, String message, boolean rendering) {
+    private void fail(RenderJob job, String message) {
         post(job, () -> {
             job.error = Failures.oneLine(message);
             job.state(RenderJob.State.FAILED);
-            if (rendering) {
-                shown = lastDone;         // the window puts the last finished image back
-            }
+            // the last finished image comes back only if it is of this very file (a re-render that failed):
+            // another scene's image, title and Save suggestion beside this file's error would mix two states
+            shown = lastDone != null && lastDone.file.equals(job.file) ? lastDone : null;
             view.ended(job);
         });
     }

@@ -30,10 +30,18 @@ public final class SaveRules {
 
     /** {@code dir/name.txt} -> {@code dir/name.png} (a name without {@code .txt} gets {@code .png} added). */
     public static Path suggestedTarget(Path scene) {
+        return suggestedTarget(scene, false);
+    }
+
+    /**
+     * As {@link #suggestedTarget(Path)}; the image of a stopped render is suggested as
+     * {@code name-partial.png}, so it is not taken for (nor written over) the finished render.
+     */
+    public static Path suggestedTarget(Path scene, boolean partial) {
         Path abs = scene.toAbsolutePath();
         String name = abs.getFileName().toString();
         String base = name.toLowerCase(Locale.ROOT).endsWith(".txt") ? name.substring(0, name.length() - 4) : name;
-        return abs.resolveSibling(base + ".png");
+        return abs.resolveSibling(base + (partial ? "-partial" : "") + ".png");
     }
 
     /** The chosen path with {@code .png} added unless its name already ends in it (any case). */

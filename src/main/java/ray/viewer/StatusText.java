@@ -15,7 +15,8 @@ final class StatusText {
             case PARSING -> name + ": reading the scene...";
             case RENDERING -> name + ": " + rendering(job, nowNanos);
             case DONE -> name + ": " + done(job);
-            case STOPPED -> name + ": stopped" + (job.progress() == null ? "" : " at " + percent(job.progress().fraction()));
+            case STOPPED -> name + ": stopped" + (job.progress() == null ? "" : " at " + percent(job.progress().fraction()))
+                    + (job.partial() ? "; Save writes the finished tiles as a partial image" : "");
             case FAILED -> name + ": failed (details above)";
         };
     }

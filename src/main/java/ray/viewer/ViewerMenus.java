@@ -7,11 +7,13 @@ import java.nio.file.Path;
 import java.util.List;
 import javax.swing.AbstractAction;
 import javax.swing.Action;
+import javax.swing.ButtonGroup;
 import javax.swing.JCheckBoxMenuItem;
 import javax.swing.JComponent;
 import javax.swing.JMenu;
 import javax.swing.JMenuBar;
 import javax.swing.JMenuItem;
+import javax.swing.JRadioButtonMenuItem;
 import javax.swing.KeyStroke;
 
 /** The viewer's menus; every item has a keyboard shortcut (listed in the README). */
@@ -19,14 +21,17 @@ final class ViewerMenus {
 
     private static final int MENU = Toolkit.getDefaultToolkit().getMenuShortcutKeyMaskEx();
 
-    final Action open, save, rerender, stop, close, quit, fit, actual, zoomIn, zoomOut;
+    final Action open, openReference, save, rerender, stop, close, quit, fit, actual, zoomIn, zoomOut;
+    final Action showRender, showReference, showDifference, toggleAB, brighter, darker, exposureZero;
     final JCheckBoxMenuItem watch = new JCheckBoxMenuItem("Watch file (re-render when it changes)");
+    final JRadioButtonMenuItem renderItem, referenceItem, differenceItem;
     final JMenu recent = new JMenu("Open recent");
     private final ViewingFrame frame;
 
     ViewerMenus(ViewingFrame f) {
         frame = f;
         open = action("Open scene...", key(KeyEvent.VK_O, MENU), f::chooseScene);
+        openReference = action("Open reference image...", key(KeyEvent.VK_O, MENU | InputEvent.SHIFT_DOWN_MASK), f::chooseReference);
         save = action("Save image as PNG...", key(KeyEvent.VK_S, MENU), f::saveImage);
         rerender = action("Re-render (read the file again)", key(KeyEvent.VK_R, MENU), f::rerender);
         stop = action("Stop", key(KeyEvent.VK_PERIOD, MENU), f::stop);
@@ -36,6 +41,21 @@ final class ViewerMenus {
         actual = action("Actual size (1:1)", key(KeyEvent.VK_1, MENU), () -> f.view.actualSize());
         zoomIn = action("Zoom in", key(KeyEvent.VK_EQUALS, MENU), () -> f.view.zoomIn());
         zoomOut = action("Zoom out", key(KeyEvent.VK_MINUS, MENU), () -> f.view.zoomOut());
+        showRender = action("Show render (A)", key(KeyEvent.VK_2, MENU), () -> f.show(ImageView.Mode.RENDER));
+        showReference = action("Show reference (B)", key(KeyEvent.VK_3, MENU), () -> f.show(ImageView.Mode.REFERENCE));
+        showDifference = action("Show difference (heat map)", key(KeyEvent.VK_4, MENU), () -> f.show(ImageView.Mode.DIFFERENCE));
+        toggleAB = action("Toggle render / reference (A/B)", key(KeyEvent.VK_T, MENU), f::toggleAB);
+        brighter = action("Brighter (+1/2 stop)", key(KeyEvent.VK_E, MENU), () -> f.exposure(0.5));
+        darker = action("Darker (-1/2 stop)", key(KeyEvent.VK_E, MENU | InputEvent.SHIFT_DOWN_MASK), () -> f.exposure(-0.5));
+        exposureZero = action("Exposure 0 (the PNG's values)", key(KeyEvent.VK_E, MENU | InputEvent.ALT_DOWN_MASK), () -> f.exposure(0));
+        renderItem = new JRadioButtonMenuItem(showRender);
+        referenceItem = new JRadioButtonMenuItem(showReference);
+        differenceItem = new JRadioButtonMenuItem(showDifference);
+        ButtonGroup shows = new ButtonGroup();
+        shows.add(renderItem);
+        shows.add(referenceItem);
+        shows.add(differenceItem);
+        renderItem.setSelected(true);
         watch.setAccelerator(key(KeyEvent.VK_W, MENU | InputEvent.SHIFT_DOWN_MASK));
         watch.addActionListener(e -> f.watchChanged());
     }
@@ -46,6 +66,7 @@ final class ViewerMenus {
         file.setMnemonic(KeyEvent.VK_F);
         file.add(open);
         file.add(recent);
+        file.add(openReference);
         file.addSeparator();
         file.add(save);
         file.addSeparator();
@@ -63,6 +84,15 @@ final class ViewerMenus {
         view.add(actual);
         view.add(zoomIn);
         view.add(zoomOut);
+        view.addSeparator();
+        view.add(renderItem);
+        view.add(referenceItem);
+        view.add(differenceItem);
+        view.add(toggleAB);
+        view.addSeparator();
+        view.add(brighter);
+        view.add(darker);
+        view.add(exposureZero);
         bar.add(file);
         bar.add(render);
         bar.add(view);
@@ -91,7 +121,7 @@ final class ViewerMenus {
             i++;
             JMenuItem item = new JMenuItem(i + "  " + p.getFileName() + "  (" + p.getParent() + ")");
             item.setAccelerator(key(KeyEvent.VK_0 + i, MENU | InputEvent.ALT_DOWN_MASK));
-            item.addActionListener(e -> frame.load(p));
+            item.addActionListener(e -> frame.openRecent(p));
             recent.add(item);
         }
         recent.setEnabled(i > 0);

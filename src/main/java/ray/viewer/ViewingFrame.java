@@ -43,6 +43,10 @@ public final class ViewingFrame extends JFrame {
 
     final ImageView view = new ImageView();
     private final JLabel status = new JLabel("Open a scene file: File > Open (Ctrl+O), or drop one here.");
+    /** Right of the status line: the zoom, what is shown, the exposure. */
+    final JLabel info = new JLabel("");
+    /** Above the status line: the pixel under the cursor (position, linear and 8-bit values, the reference's). */
+    final JLabel pixel = new JLabel(" ");
     private final JTextArea error = new JTextArea();
     private final transient RenderSession session;
     /** The recent files, used on {@link #BACKGROUND} only (created there: the preferences' first use is slow). */
@@ -58,6 +62,10 @@ public final class ViewingFrame extends JFrame {
     private final Timer ticker;
     private final JScrollPane scroll;
     private File lastDir = new File(".").getAbsoluteFile();
+    /** The scene the window is about (title, re-render, watch), whether its last attempt failed, and where its reference came from. */
+    private Path shownFile;
+    private boolean failed;
+    private Path referenceScene;
 
     ViewingFrame() {
         this(new RenderSettings());
@@ -80,9 +88,24 @@ public final class ViewingFrame extends JFrame {
         status.setBorder(BorderFactory.createEmptyBorder(3, 8, 3, 8));
         status.setMinimumSize(new Dimension(0, status.getPreferredSize().height));
         status.setPreferredSize(new Dimension(0, status.getPreferredSize().height));   // the text never sizes the window
+        info.setBorder(BorderFactory.createEmptyBorder(3, 8, 3, 8));
+        info.setHorizontalAlignment(JLabel.RIGHT);
+        pixel.setBorder(BorderFactory.createEmptyBorder(3, 8, 0, 8));
+        pixel.setPreferredSize(new Dimension(0, pixel.getPreferredSize().height));
+        pixel.setMinimumSize(new Dimension(0, pixel.getPreferredSize().height));
+        view.onInfo((p, v) -> {
+            pixel.setText(p.isEmpty() ? " " : p);
+            info.setText(v);
+        });
+        JPanel line = new JPanel(new BorderLayout());
+        line.add(status, BorderLayout.CENTER);
+        line.add(info, BorderLayout.EAST);
+        JPanel lines = new JPanel(new BorderLayout());
+        lines.add(pixel, BorderLayout.NORTH);
+        lines.add(line, BorderLayout.SOUTH);
         JPanel south = new JPanel(new BorderLayout());
         south.add(error, BorderLayout.NORTH);
-        south.add(status, BorderLayout.SOUTH);
+        south.add(lines, BorderLayout.SOUTH);
         scroll = new JScrollPane(view);
         scroll.setBorder(BorderFactory.createEmptyBorder());
         add(scroll, BorderLayout.CENTER);
@@ -103,11 +126,15 @@ public final class ViewingFrame extends JFrame {
      * when there is no display to open it on: none configured, or one that cannot be reached.
      */
     public static void open(Path scene) throws HeadlessException {
-        open(scene, new RenderSettings());
+        open(scene == null ? List.of() : List.of(scene), new RenderSettings());
     }
 
-    /** {@link #open(Path)}, rendering with {@code settings} over each scene's globals ({@code raytracer --view --samples 4 ...}). */
-    public static void open(Path scene, RenderSettings settings) throws HeadlessException {
+    /**
+     * Opens one viewer window per scene (one empty window when there is none), each rendering its scene
+     * with {@code settings} over the scene's globals ({@code raytracer --view --samples 4 a.txt b.txt});
+     * returns once they are shown. Throws {@link HeadlessException} as {@link #open(Path)}.
+     */
+    public static void open(List<Path> scenes, RenderSettings settings) throws HeadlessException {
         if (GraphicsEnvironment.isHeadless()) {
             throw new HeadlessException("no display");
         }
@@ -115,10 +142,17 @@ public final class ViewingFrame extends JFrame {
             GraphicsEnvironment.getLocalGraphicsEnvironment().getScreenDevices();   // connects to the display
             SwingUtilities.invokeAndWait(() -> {
                 LookAndFeels.install();
-                ViewingFrame f = new ViewingFrame(settings);
-                f.setVisible(true);
-                if (scene != null) {
-                    f.load(scene);
+                int i = 0;
+                for (Path scene : scenes.isEmpty() ? java.util.Collections.<Path>singletonList(null) : scenes) {
+                    ViewingFrame f = new ViewingFrame(settings);
+                    if (i > 0) {
+                        f.setLocation(40 * i, 40 * i);              // cascaded, each title visible
+                    }
+                    i++;
+                    f.setVisible(true);
+                    if (scene != null) {
+                        f.load(scene);
+                    }
                 }
             });
         } catch (InvocationTargetException e) {
@@ -156,6 +190,16 @@ public final class ViewingFrame extends JFrame {
         }
         session.open(file);
         updateRecent(file);
+    }
+
+    /** File > Open recent: a file that is gone is said so and dropped from the list. */
+    void openRecent(Path file) {
+        if (!java.nio.file.Files.isRegularFile(file)) {
+            showError(file + " no longer exists; removed from Open recent");
+            updateRecent(null);                 // the list drops missing files as it is read
+            return;
+        }
+        load(file);
     }
 
     /** Puts {@code file} (if not null) first in the recent files and rebuilds the menu; the store's work in the background. */
@@ -196,13 +240,76 @@ public final class ViewingFrame extends JFrame {
         session.stop();
     }
 
+    /** Render > Watch file toggled: watches the scene of this window, or says there is none yet. */
     void watchChanged() {
         RenderJob job = session.current();
-        watch.watch(menus.watch.isSelected() && job != null ? job.file() : null);
+        if (menus.watch.isSelected() && job == null) {
+            menus.watch.setSelected(false);
+            setStatus("Watch file: open a scene first (File > Open); then saving it in an editor re-renders it.");
+        }
+        boolean on = menus.watch.isSelected();
+        watch.watch(on ? job.file() : null);
+        if (on) {
+            setStatus("Watching " + job.file().getFileName() + ": saving it re-renders it.");
+        }
+        updateTitle();
+    }
+
+    /** File > Open reference image: a PNG to compare the render with (its own folder remembered). */
+    void chooseReference() {
+        Path p = Dialogs.chooseReference(this, lastDir);
+        if (p != null) {
+            loadReference(p);
+            if (view.hasReference()) {
+                show(ImageView.Mode.DIFFERENCE);
+            }
+        }
+    }
+
+    /** Reads {@code png} as the reference (null: none); a file that cannot be read is said so, and none is kept. */
+    private void loadReference(Path png) {
+        if (png == null) {
+            view.reference(null, null);
+        } else {
+            try {
+                java.awt.image.BufferedImage img = javax.imageio.ImageIO.read(png.toFile());
+                if (img == null) {
+                    throw new java.io.IOException("not an image ImageIO can read");
+                }
+                view.reference(img, png.getFileName().toString());
+            } catch (java.io.IOException | RuntimeException e) {
+                view.reference(null, null);
+                showError("Cannot read the reference image " + png + ": " + Failures.reason(e));
+            }
+        }
+        RenderJob job = session.current();
+        referenceScene = job == null ? null : job.file();
+        updateActions();
+    }
+
+    void show(ImageView.Mode m) {
+        view.mode(m);
+        updateActions();
+    }
+
+    void toggleAB() {
+        view.toggle();
+        updateActions();
+    }
+
+    /** Changes the exposure by {@code stops}; 0 sets it back to 0 (the PNG's values). */
+    void exposure(double stops) {
+        view.exposure(stops == 0 ? 0 : view.exposure() + stops);
+    }
+
+    /** The title names the scene the window is about, whether its last attempt failed, and whether it is watched. */
+    private void updateTitle() {
+        setTitle(shownFile == null ? TITLE : TITLE + " - " + shownFile.getFileName() + (failed ? " (failed)" : "")
+                + (menus.watch.isSelected() ? " (watching)" : ""));
     }
 
     void saveImage() {
-        RenderJob shown = session.shown();
+        RenderJob shown = session.saveable();
         if (shown == null) {
             return;                    // the action is disabled then; a shortcut may still arrive
         }
@@ -237,6 +344,15 @@ public final class ViewingFrame extends JFrame {
 
     private void updateActions() {
         menus.save.setEnabled(session.canSave());
+        RenderJob saveable = session.saveable();
+        menus.save.putValue(javax.swing.Action.NAME, saveable != null && saveable.partial() ? "Save partial image as PNG..." : "Save image as PNG...");
+        boolean ref = view.hasReference();
+        menus.showReference.setEnabled(ref);
+        menus.showDifference.setEnabled(ref);
+        menus.toggleAB.setEnabled(ref);
+        menus.renderItem.setSelected(view.mode() == ImageView.Mode.RENDER);
+        menus.referenceItem.setSelected(view.mode() == ImageView.Mode.REFERENCE);
+        menus.differenceItem.setSelected(view.mode() == ImageView.Mode.DIFFERENCE);
         menus.stop.setEnabled(session.busy());
         menus.rerender.setEnabled(session.current() != null);
         boolean image = view.hasImage();
@@ -267,11 +383,21 @@ public final class ViewingFrame extends JFrame {
             updateActions();
         }
 
+        /** A new scene's own reference image is found again; one chosen by hand stays for the same scene. */
+        private void findReference(RenderJob job) {
+            if (!job.file().equals(referenceScene)) {
+                loadReference(Compare.referenceFor(job.file()));
+            }
+        }
+
         @Override
         public void rendering(RenderJob job) {
             showError(null);
-            setTitle(TITLE + " - " + job.file().getFileName());
-            view.reset(job.scene().width, job.scene().height);
+            shownFile = job.file();
+            failed = false;
+            updateTitle();
+            view.reset(job.partialImage());
+            findReference(job);
             if (!sized) {
                 sized = true;
                 sizeFor(job.scene().width, job.scene().height);
@@ -290,9 +416,14 @@ public final class ViewingFrame extends JFrame {
             if (job.state() == RenderJob.State.FAILED) {
                 showError(job.error());
                 RenderJob back = session.shown();
-                if (back != null) {
-                    view.show(back.image());        // the last finished image comes back
-                    setTitle(TITLE + " - " + back.file().getFileName());
+                // the last finished image comes back if it is this file's; another scene's does not stay
+                // beside this file's error (title, Save and Re-render all name this file now)
+                view.show(back == null ? null : back.image());
+                shownFile = job.file();
+                failed = true;
+                updateTitle();
+                if (back == null) {
+                    loadReference(null);
                 }
             } else if (job.state() == RenderJob.State.DONE) {
                 view.show(job.image());            // exactly the finished image, whatever the tiles showed

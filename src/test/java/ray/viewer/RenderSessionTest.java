@@ -66,6 +66,10 @@ class RenderSessionTest {
     static final class Recorder implements RenderSession.View {
         final List<String> log = new ArrayList<>();
         long pixels;
+        /** The tiles' values as handed over (the last one of each pixel), and which pixels were. */
+        Image seenImage;
+        boolean[] seen;
+        long seenPixels;
         RenderJob rendering;
 
         @Override
@@ -84,6 +88,19 @@ class RenderSessionTest {
         public void tile(RenderJob job, Image image, int x0, int y0, int x1, int y1) {
             assertSame(rendering, job, "a tile of a job that is not the one rendering");
             pixels += (long) (x1 - x0) * (y1 - y0);
+            assertSame(job.partialImage(), image, "tiles arrive in the job's own copy");
+            if (seenImage == null || seenImage.width != image.width || seenImage.height != image.height) {
+                seenImage = new Image(image.width, image.height);
+                seen = new boolean[image.width * image.height];
+            }
+            for (int y = y0; y < y1; y++) {
+                for (int x = x0; x < x1; x++) {
+                    int p = y * image.width + x;
+                    System.arraycopy(image.rgb, 3 * p, seenImage.rgb, 3 * p, 3);
+                    seenPixels += seen[p] ? 0 : 1;
+                    seen[p] = true;
+                }
+            }
         }
 
         @Override
@@ -191,7 +208,8 @@ class RenderSessionTest {
         String e = job.error();
         assertTrue(e.startsWith(scene + ": rendering failed in ThrowingMaterial.shade (ThrowingMaterial.java:"), e);
         assertTrue(e.endsWith("UnsupportedOperationException: student code not finished"), e);
-        assertSame(first, session.shown(), "the last finished image comes back after a failed render");
+        assertNull(session.shown(), "another scene's image does not come back beside this scene's error");
+        assertFalse(session.canSave());
         assertTrue(events.log.contains("rendering throws.txt"), events.log::toString);
     }
 
@@ -228,6 +246,19 @@ class RenderSessionTest {
     }
 
     @Test
+    void aBadSceneAfterAGoodOneLeavesNoMixedState(@TempDir Path dir) throws Exception {
+        RenderJob good = session.open(write(dir, "good.txt", GOOD));
+        runUntilFinished(good);
+        Path badFile = write(dir, "bad.txt", GOOD.replace("double radius 1", "double radus 1"));
+        RenderJob bad = session.open(badFile);
+        runUntilFinished(bad);
+        assertEquals(RenderJob.State.FAILED, bad.state());
+        assertNull(session.shown(), "good.txt's image would be shown (and saved as bad.png) beside bad.txt's error");
+        assertFalse(session.canSave());
+        assertSame(bad, session.current(), "Re-render targets the file whose error is shown");
+    }
+
+    @Test
     void missingFileIsReportedAndNothingCanBeSaved(@TempDir Path dir) throws Exception {
         RenderJob job = session.open(dir.resolve("nope.txt"));
         runUntilFinished(job);
@@ -242,17 +273,35 @@ class RenderSessionTest {
         Path scene = write(dir, "slow.txt", SLOW);
         RenderJob job = session.open(scene);
         runUntilRendering(job);
+        while (events.seenPixels == 0) {                     // a few tiles on screen first
+            Runnable r = thread.poll(60, TimeUnit.SECONDS);
+            assertNotNull(r, "no tile within 60 s");
+            r.run();
+        }
         assertTrue(session.busy());
         session.stop();
         assertEquals(RenderJob.State.STOPPED, job.state());
         assertFalse(session.busy());
-        assertFalse(session.canSave(), "a stopped render's partial image is not saveable");
+        assertSame(job, session.saveable(), "a stopped render's finished tiles can be saved, as a partial image");
+        assertTrue(job.partial());
+        assertTrue(SaveRules.suggestedTarget(job.file(), job.partial()).endsWith("slow-partial.png"));
         awaitNoRenderThreads();
         long pixelsAtStop = events.pixels;
         for (Runnable r; (r = thread.poll()) != null; ) {
             r.run();
         }
         assertEquals(pixelsAtStop, events.pixels, "tiles after stop are dropped");
+        // the partial image is what the window showed: the tiles handed over, copied at once, black elsewhere
+        Image partial = job.imageToSave();
+        assertSame(job.partialImage(), partial);
+        assertTrue(events.seenPixels > 0, "no tile before stop");
+        for (int p = 0; p < partial.width * partial.height; p++) {
+            if (events.seen[p]) {
+                for (int c = 0; c < 3; c++) {
+                    assertEquals(events.seenImage.rgb[3 * p + c], partial.rgb[3 * p + c], "pixel " + p + ": not the tile shown");
+                }
+            }
+        }
         assertTrue(job.progress().fraction() < 1, "the slow scene was stopped before its end");
         assertEquals("ended slow.txt STOPPED", events.log.get(events.log.size() - 1));
     }

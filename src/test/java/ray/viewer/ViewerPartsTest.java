@@ -73,12 +73,12 @@ class ViewerPartsTest {
     }
 
     @Test
-    void recentFilesNewestFirstWithoutDuplicates(@TempDir Path dir) throws BackingStoreException {
+    void recentFilesNewestFirstWithoutDuplicates(@TempDir Path dir) throws BackingStoreException, IOException {
         Preferences node = Preferences.userRoot().node("raytracer-test/" + UUID.randomUUID());
         try {
             RecentFiles r = new RecentFiles(node);
             for (int i = 0; i < RecentFiles.MAX + 3; i++) {
-                r.add(dir.resolve(i + ".txt"));
+                r.add(Files.writeString(dir.resolve(i + ".txt"), ""));
             }
             r.add(dir.resolve("5.txt"));
             List<Path> l = new RecentFiles(node).list();          // read back as a new run would

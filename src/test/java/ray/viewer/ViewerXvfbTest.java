@@ -58,8 +58,9 @@ class ViewerXvfbTest {
                 Assumptions.abort(why);
             }
         }
-        // -displayfd: the server picks a free display and writes its number once it accepts clients
-        xvfb = new ProcessBuilder("Xvfb", "-displayfd", "1", "-screen", "0", "1280x1024x24", "-nolisten", "tcp")
+        // -displayfd: the server picks a free display and writes its number once it accepts clients; -noreset:
+        // it does not reset (refusing clients meanwhile) each time its last client, a viewer that quit, leaves
+        xvfb = new ProcessBuilder("Xvfb", "-displayfd", "1", "-screen", "0", "1280x1024x24", "-nolisten", "tcp", "-noreset")
                 .redirectError(work.resolve("xvfb.log").toFile()).start();
         BufferedReader r = new BufferedReader(new InputStreamReader(xvfb.getInputStream(), StandardCharsets.US_ASCII));
         String n = r.readLine();
@@ -176,13 +177,112 @@ class ViewerXvfbTest {
         }
     }
 
-    private Process startViewer(Path scene) throws IOException {
+    @Test
+    void watchWithoutASceneSaysSoAndWatchRightAfterOpeningCatchesASameSizeEdit() throws Exception {
+        Process empty = startViewer();
+        try {
+            String window = waitForWindow("RayTracer viewer", empty);
+            focus(window);
+            key("ctrl+shift+w");
+            Thread.sleep(800);
+            assertTrue(empty.isAlive());
+            String log = Files.readString(work.resolve("viewer-none.log"));
+            assertTrue(!log.contains("Exception"), "Watch with no scene: " + log);
+            assertEquals(window, run("xdotool", "search", "--name", exactly("RayTracer viewer")).lines().findFirst().orElse(""),
+                    "the title does not claim a watch");
+            key("ctrl+q");
+            assertTrue(empty.waitFor(20, TimeUnit.SECONDS));
+        } finally {
+            empty.destroyForcibly();
+        }
+
+        Path dir = Files.createDirectories(work.resolve("watch"));
+        Path scene = Files.writeString(dir.resolve("w.txt"), RenderSessionTest.GOOD);
+        Process viewer = startViewer(scene);
+        try {
+            String window = waitForWindow("RayTracer viewer - w.txt", viewer);
+            focus(window);
+            key("ctrl+shift+w");                                   // at once, while the first render may still run
+            waitForWindow("RayTracer viewer - w.txt (watching)", viewer);
+            String greener = Files.readString(scene).replace("BGColor [0.1 0.2 0.3]", "BGColor [0.1 0.6 0.3]");
+            Path edited = Files.createDirectories(work.resolve("watch-edited"));
+            ByteArrayOutputStream err = new ByteArrayOutputStream();
+            assertEquals(0, Main.run(new PrintStream(new ByteArrayOutputStream()), new PrintStream(err),
+                    Files.writeString(edited.resolve("w.txt"), greener).toString(), "-o", edited.resolve("cli.png").toString()), err::toString);
+            var time = Files.getLastModifiedTime(scene);
+            Files.writeString(scene, greener);                     // the same size ...
+            Files.setLastModifiedTime(scene, time);                // ... and time stamp: only the content tells
+            waitForImage(ImageIO.read(edited.resolve("cli.png").toFile()), viewer);
+        } finally {
+            viewer.destroyForcibly();
+        }
+    }
+
+    @Test
+    void viewOpensAWindowPerSceneAndComparesWithTheScenesReference() throws Exception {
+        Path dir = Files.createDirectories(work.resolve("compare/scenes"));
+        Path refs = Files.createDirectories(work.resolve("compare/reference-images"));
+        Path a = Files.writeString(dir.resolve("a.txt"), RenderSessionTest.GOOD.replace("Width 40", "Width 160").replace("Height 30", "Height 120"));
+        Path b = Files.writeString(dir.resolve("b.txt"), RenderSessionTest.GOOD);
+        // a's reference: the same scene with a brighter light, as a student's render would differ from the course's
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        Path refScene = Files.writeString(work.resolve("compare/ref.txt"), Files.readString(a).replace("[20 20 20]", "[26 26 26]"));
+        assertEquals(0, Main.run(new PrintStream(new ByteArrayOutputStream()), new PrintStream(err), refScene.toString(),
+                "-o", refs.resolve("a.png").toString()), err::toString);
+        assertEquals(0, Main.run(new PrintStream(new ByteArrayOutputStream()), new PrintStream(err), a.toString(),
+                "-o", work.resolve("compare/a-cli.png").toString()), err::toString);
+        BufferedImage render = ImageIO.read(work.resolve("compare/a-cli.png").toFile()), ref = ImageIO.read(refs.resolve("a.png").toFile());
+        Process viewer = startViewer(a, b);
+        try {
+            String window = waitForWindow("RayTracer viewer - a.txt", viewer);
+            String other = waitForWindow("RayTracer viewer - b.txt", viewer);      // was silently dropped
+            run("xdotool", "windowmove", other, "0", "600");        // no window manager: b would cover a
+            waitForImage(render, viewer);
+            focus(window);
+            key("ctrl+4");                                         // the difference, from the scene's own reference-images/a.png
+            Compare c = Compare.of(render, ref);
+            assertTrue(c.overOneStep() > 100, "the two renders differ: " + c.summary());
+            BufferedImage heat = c.heatMap();
+            waitForImage(heat.getSubimage(0, 0, heat.getWidth(), heat.getHeight() / 2), viewer);
+            key("ctrl+t");                                          // A/B: from the difference, the render ...
+            waitForImage(render, viewer);
+            key("ctrl+t");                                          // ... the reference ...
+            waitForImage(ref, viewer);
+            key("ctrl+2");                                          // ... and the render again
+            waitForImage(render, viewer);
+            key("ctrl+e", "ctrl+e");                                // one stop brighter
+            BufferedImage brighter = new BufferedImage(render.getWidth(), render.getHeight(), BufferedImage.TYPE_INT_RGB);
+            ray.render.Image lin = new ray.render.Renderer(ray.parse.Parser.parse(a)).render();
+            for (int y = 0; y < lin.height; y++) {
+                for (int x = 0; x < lin.width; x++) {
+                    int i = 3 * (y * lin.width + x);
+                    brighter.setRGB(x, y, ray.render.Image.toByte(2 * lin.rgb[i]) << 16 | ray.render.Image.toByte(2 * lin.rgb[i + 1]) << 8
+                            | ray.render.Image.toByte(2 * lin.rgb[i + 2]));
+                }
+            }
+            waitForImage(brighter, viewer);
+            focus(window);
+            key("ctrl+q");
+            assertTrue(viewer.waitFor(20, TimeUnit.SECONDS), "Quit did not end the process");
+        } finally {
+            viewer.destroyForcibly();
+        }
+    }
+
+    private Process startViewer(Path... scenes) throws IOException {
         String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
-        ProcessBuilder pb = new ProcessBuilder(java, "-cp", System.getProperty("java.class.path"),
-                "-Djava.awt.headless=false", "-Djava.util.prefs.userRoot=" + work.resolve("prefs"),
-                "RayTracer", "--view", scene.toString());
+        List<String> cmd = new ArrayList<>(List.of(java, "-cp", System.getProperty("java.class.path"),
+                "-Djava.awt.headless=false", "-Djava.util.prefs.userRoot=" + work.resolve("prefs"), "RayTracer"));
+        if (scenes.length > 0) {
+            cmd.add("--view");
+        }
+        for (Path s : scenes) {
+            cmd.add(s.toString());
+        }
+        ProcessBuilder pb = new ProcessBuilder(cmd);
         pb.environment().put("DISPLAY", display);
-        pb.redirectErrorStream(true).redirectOutput(work.resolve("viewer-" + scene.getFileName() + ".log").toFile());
+        String name = scenes.length == 0 ? "none" : scenes[0].getFileName().toString();
+        pb.redirectErrorStream(true).redirectOutput(work.resolve("viewer-" + name + ".log").toFile());
         return pb.start();
     }
 
