@@ -11,6 +11,9 @@
 #                              with RAYTRACER_JIT=long when the render plan says the render is long
 #                              (docs/performance.md, "The JIT policy"); JVM options naming the JIT
 #                              in JAVA_OPTS or RAYTRACER_OPTS are left alone
+#   CLASSPATH                  more class path (a student's compiled classes), after the installation's
+# and one option of its own, anywhere before `--`: --class-path PATH (also -cp PATH, --class-path=PATH),
+# the same as CLASSPATH; the renderer's other options pass through unchanged.
 
 # The installation: follow symbolic links to this script; its directory's parent.
 app_path=$0
@@ -41,7 +44,42 @@ else
     JAVACMD=java
 fi
 
-CLASSPATH=@CLASSPATH@
+user_cp=${CLASSPATH-}
+app_cp=@CLASSPATH@
+
+# --class-path / -cp PATH: taken out of the arguments (the rest keep their order), added with $CLASSPATH
+# after the installation's own class path, so a student's classes are found by the scene parser (a
+# class of the same name as one of the renderer's is not replaced). No process start, nothing eval'd.
+n=$#
+while [ "$n" -gt 0 ]; do
+    a=$1
+    shift
+    n=$((n - 1))
+    case $a in
+        --)
+            set -- "$@" "$a"
+            while [ "$n" -gt 0 ]; do set -- "$@" "$1"; shift; n=$((n - 1)); done ;;
+        -cp|--class-path|--classpath)
+            if [ "$n" -eq 0 ]; then
+                echo "raytracer: $a needs a class path (folders or jars, ':'-separated; see --help)" >&2
+                exit 2
+            fi
+            user_cp=${user_cp:+$user_cp:}$1
+            shift
+            n=$((n - 1)) ;;
+        --class-path=*|--classpath=*|-cp=*)
+            user_cp=${user_cp:+$user_cp:}${a#*=} ;;
+        *)
+            set -- "$@" "$a" ;;
+    esac
+done
+if [ -n "$user_cp" ]; then
+    app_cp=$app_cp:$user_cp
+    # exported as CLASSPATH (which java ignores beside -classpath), so a start of this script again by the
+    # program (the JIT policy's RAYTRACER_RELAUNCH, with the options it was given) finds the same classes
+    CLASSPATH=$user_cp
+    export CLASSPATH
+fi
 DEFAULT_JVM_OPTS=@DEFAULT_JVM_OPTS@
 
 # Whether stderr and stdout are terminals (the progress bar goes to stderr only when it is one; Java's
@@ -52,7 +90,7 @@ if [ -t 1 ]; then tty1=true; else tty1=false; fi
 # The java command line, built last argument first. Nothing taken from a path (the installation's
 # folder, the class path) ever passes through `eval`: an installation under a folder named
 # x$(touch PWNED)y or a"b starts like any other (the launcher test installs under such names).
-set -- -classpath "$CLASSPATH" @MAIN@ "$@"
+set -- -classpath "$app_cp" @MAIN@ "$@"
 set -- "-Draytracer.stderrTty=$tty2" "-Draytracer.stdoutTty=$tty1" "$@"
 
 # JAVA_OPTS and RAYTRACER_OPTS: split as Gradle's own script splits them (xargs honours quotes), then

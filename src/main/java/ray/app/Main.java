@@ -1,6 +1,7 @@
 package ray.app;
 
 import java.awt.GraphicsEnvironment;
+import java.io.File;
 import java.io.PrintStream;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -31,7 +32,8 @@ import ray.settings.RenderSettings;
                 "A scene named '-' is read from standard input and its PNG goes to standard output (or -o).",
                 "'--' ends the options (for a scene whose name starts with '-'); '@name' is a scene like any other."},
         exitCodeListHeading = "%nExit status:%n",
-        exitCodeList = {"0:every scene rendered", "1:a scene could not be read or rendered", "2:bad command line"})
+        exitCodeList = {"0:every scene rendered", "1:a scene could not be read or rendered", "2:bad command line",
+                "130:interrupted (Ctrl+C); no partial PNG is left"})
 public final class Main implements Callable<Integer> {
 
     @Parameters(paramLabel = "SCENE", description = "scene files (.txt) to render")
@@ -44,7 +46,7 @@ public final class Main implements Callable<Integer> {
     /** --output as a path (set from outputArg when the command runs). */
     Path output;
 
-    @Option(names = {"-j", "--threads"}, paramLabel = "N", description = "render threads (default: all cores, ${DEFAULT-VALUE})")
+    @Option(names = {"-j", "--threads"}, paramLabel = "N", description = "render threads (default: all cores)")
     int threads = Runtime.getRuntime().availableProcessors();
 
     @CommandLine.Mixin
@@ -68,6 +70,11 @@ public final class Main implements Callable<Integer> {
 
     @Option(names = "--allow-long", description = "render even a scene whose plan bounds it above 1e11 rays (refused otherwise)")
     boolean allowLong;
+
+    @Option(names = {"--class-path", "-cp"}, paramLabel = "PATH", description = "also find the scene's classes (your own "
+            + "compiled classes) in these folders and jars, ':'-separated, after the renderer's own; $CLASSPATH "
+            + "does the same (read by the raytracer launcher)")
+    String classPath;
 
     @Option(names = "--view", description = "open the viewer on the scene (a window for each) instead of writing a PNG")
     boolean view;
@@ -245,6 +252,13 @@ public final class Main implements Callable<Integer> {
 
     @Override
     public Integer call() {
+        if (classPath != null) {
+            // the launcher takes the option out and puts the path on the JVM's class path; here the JVM
+            // was started another way (java RayTracer, an IDE) and its class path is already fixed
+            err.println(oneLine("raytracer: --class-path is read by the raytracer launcher (bin/raytracer); started with java, "
+                    + "put the folder on java's own class path: java -cp \"" + classPath + File.pathSeparator + "<install>/lib/*\" RayTracer ..."));
+            return 2;
+        }
         if (outputArg != null) {
             try {
                 output = Path.of(outputArg);

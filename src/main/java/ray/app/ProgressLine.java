@@ -19,7 +19,7 @@ final class ProgressLine implements ProgressListener {
 
     private static final long REDRAW_NANOS = 250_000_000L;
     private static final int BAR = 20;
-    /** Columns the line may use: a terminal is at least 80 wide, and the last column would wrap on some. */
+    /** Columns the line may use when the terminal's width is not known: 80 columns less the last (it wraps on some). */
     static final int WIDTH = 79;
 
     private final PrintStream err;
@@ -33,7 +33,15 @@ final class ProgressLine implements ProgressListener {
     private boolean closed;
     private final Thread timer;
 
+    /** The terminal's columns now, asked at each redraw (a window resized mid-render is followed). */
+    private final java.util.function.IntSupplier columns;
+
     ProgressLine(PrintStream err, String label, long pixels) {
+        this(err, label, pixels, TerminalWidth::columns);
+    }
+
+    ProgressLine(PrintStream err, String label, long pixels, java.util.function.IntSupplier columns) {
+        this.columns = columns;
         this.err = err;
         this.label = label;
         this.pixels = Math.max(1, pixels);
@@ -82,31 +90,60 @@ final class ProgressLine implements ProgressListener {
         if (closed) {
             return false;
         }
-        String s = line(label, share(), System.nanoTime() - start);
-        err.print("\r" + s + (s.length() < drawn ? " ".repeat(drawn - s.length()) : ""));
+        int width = Math.max(1, columns.getAsInt() - 1);        // never the last column: the cursor would wrap
+        String s = line(label, share(), System.nanoTime() - start, width);
+        // what is left of a longer line drawn before (at most the width: padding must not wrap either)
+        int pad = Math.max(0, Math.min(drawn, width) - s.length());
+        err.print("\r" + s + " ".repeat(pad));
         err.flush();
-        drawn = Math.max(drawn, s.length());
+        drawn = Math.min(width, Math.max(drawn, s.length()));
+        lastWidth = width;
         return true;
     }
 
+    private int lastWidth = WIDTH;
+
     /** {@code label  42% [========>           ] 3.1 s, about 4.2 s left}, at most {@link #WIDTH} columns. */
     static String line(String label, double share, long elapsedNanos) {
+        return line(label, share, elapsedNanos, WIDTH);
+    }
+
+    /**
+     * The line in at most {@code width} columns, giving up first the label's start, then the bar's
+     * length (down to 5), the label, the time left, the bar and the time, so that on a narrow terminal
+     * it never wraps: {@code 42% [==>  ] 3.1 s}.
+     */
+    static String line(String label, double share, long elapsedNanos, int width) {
         int pct = (int) Math.floor(100 * share);
-        int fill = (int) Math.floor(BAR * share);
-        StringBuilder bar = new StringBuilder(BAR + 2).append('[');
-        for (int i = 0; i < BAR; i++) {
-            bar.append(i < fill ? '=' : i == fill ? '>' : ' ');
-        }
-        bar.append(']');
         double elapsed = elapsedNanos / 1e9;
         String time = duration(elapsed);
-        if (share >= 0.02 || share > 0 && elapsed >= 1) {
-            time += ", about " + duration(elapsed * (1 - share) / share) + " left";
+        String left = share >= 0.02 || share > 0 && elapsed >= 1 ? ", about " + duration(elapsed * (1 - share) / share) + " left" : "";
+        String percent = (pct < 10 ? "  " : pct < 100 ? " " : "") + pct + "%";
+        // the parts without the label, longest first; the bar shrinks before anything is dropped, the time
+        // left goes before the label (at least its last 8 characters) does
+        for (boolean named : new boolean[] {true, false}) {
+            for (String t : new String[] {time + left, time, ""}) {
+                for (int bar = BAR; bar >= 5; bar--) {
+                    String tail = " " + percent + " " + bar(share, bar) + (t.isEmpty() ? "" : " " + t);
+                    int room = width - tail.length();
+                    if (named ? room >= Math.min(label.length(), 8) : room >= 0) {
+                        String name = label.length() <= room ? label : room > 3 ? "..." + label.substring(label.length() - room + 3) : "";
+                        return name.isEmpty() ? tail.substring(1) : name + tail;
+                    }
+                }
+            }
         }
-        String tail = (pct < 10 ? "   " : pct < 100 ? "  " : " ") + pct + "% " + bar + " " + time;
-        int room = WIDTH - tail.length();
-        String name = label.length() <= room ? label : room > 3 ? "..." + label.substring(label.length() - room + 3) : "";
-        return name + tail;
+        String bare = percent.trim();
+        return bare.length() <= width ? bare : "";
+    }
+
+    private static String bar(double share, int n) {
+        int fill = (int) Math.floor(n * share);
+        StringBuilder bar = new StringBuilder(n + 2).append('[');
+        for (int i = 0; i < n; i++) {
+            bar.append(i < fill ? '=' : i == fill ? '>' : ' ');
+        }
+        return bar.append(']').toString();
     }
 
     /** 4.2 s, 3 min 05 s, 2 h 07 min. */
@@ -130,7 +167,7 @@ final class ProgressLine implements ProgressListener {
             }
             closed = true;
             if (drawn > 0) {
-                err.print("\r" + " ".repeat(drawn) + "\r");
+                err.print("\r" + " ".repeat(Math.min(drawn, lastWidth)) + "\r");
                 err.flush();
             }
         }

@@ -29,6 +29,12 @@ final class FieldLines {
         return -1;
     }
 
+    /** The line {@code name} was set on, or -1. */
+    int lineOf(String name) {
+        int at = indexOf(name);
+        return at < 0 ? -1 : lines[at];
+    }
+
     boolean contains(String name) {
         return indexOf(name) >= 0;
     }

@@ -67,6 +67,8 @@ public final class Parser {
     /** Surfaces other surfaces are built from (CSG operands): left out of the scene at the end. */
     private final java.util.Set<Surface> operands = java.util.Collections.newSetFromMap(new java.util.IdentityHashMap<>());
     private int firstDegenerateLine;
+    /** Plausibility warnings ({@link Plausibility}), in the order of their objects. */
+    private final List<String> plausibility = new ArrayList<>();
 
     private int line;
     /** The scene file when read from one (an input the output must never replace). */
@@ -539,6 +541,10 @@ public final class Parser {
         } catch (RuntimeException | LinkageError | AssertionError | StackOverflowError e) {
             throw error(o.getClass().getSimpleName() + ".init() failed: " + describe(e));
         }
+        for (String[] w : Plausibility.of(o)) {
+            int at = currentFields.lineOf(w[0]);
+            plausibility.add(file + ":" + (at > 0 ? at : line) + ": warning: " + o.getClass().getSimpleName() + " " + w[1]);
+        }
         switch (currentType) {
             case "Camera":
                 if (scene.camera != null) {
@@ -647,6 +653,7 @@ public final class Parser {
             }
             scene.surfaces = rendered;
         }
+        warnings.addAll(plausibility);
         if (degenerate > 0) {
             warnings.add(file + ":" + firstDegenerateLine + ": warning: zero-area triangle, never hit"
                     + (degenerate > 1 ? " (and " + (degenerate - 1) + " more)" : ""));

@@ -212,7 +212,7 @@ public final class PlanReport {
         Scene s = plan.scene();
         out.add("plan for " + sceneName + " (" + s.width + "x" + s.height + ", MaxDepth " + plan.settings().maxDepth() + ")");
         for (Effect e : effects) {
-            String cost = e.kind == null ? "" : "   <= " + count(plan.bound().get(e.kind)) + " " + e.kind.key() + " rays";
+            String cost = e.kind == null ? "" : "   <= " + count(plan.bound().get(e.kind)) + " " + e.kind.key() + (plan.bound().get(e.kind) == 1 ? " ray" : " rays");
             out.add(String.format(java.util.Locale.ROOT, "  %-19s %-4s %s%s", e.name, e.on ? "on" : "off", e.why, e.on ? cost : ""));
         }
         for (String l : lightLines) {

@@ -118,7 +118,8 @@ public final class RayBound {
                     : branch + " secondary rays per hit to MaxDepth " + depth + " (" + branch + "^" + depth + " paths)");
         }
         if (perPoint > 0 && get(RayKind.SHADOW) > 0) {
-            s += ", " + (Double.isFinite(perPoint) ? PlanReport.count(perPoint) : "unknown") + " shadow rays per lit point";
+            s += ", " + (Double.isFinite(perPoint) ? PlanReport.count(perPoint) : "unknown") + (perPoint == 1 ? " shadow ray" : " shadow rays")
+                    + " per lit point";
         }
         return s;
     }

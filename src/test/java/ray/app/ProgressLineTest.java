@@ -63,4 +63,48 @@ class ProgressLineTest {
         assertFalse(p.redraw(), "nothing is drawn after clear()");
         assertEquals(all, bytes.toString(StandardCharsets.UTF_8));
     }
+
+    @Test
+    void theLineFitsNarrowTerminalsAndNeverWraps() {
+        String[] labels = {"s.txt", "scenes/showcase-extensions.txt", "a/very/long/path/to/some/student/scene-file-name.txt"};
+        double[] shares = {0, 0.01, 0.42, 0.999, 1};
+        long[] times = {300_000_000L, 12_000_000_000L, 3_700_000_000_000L};
+        for (int width = 1; width <= 120; width++) {
+            for (String label : labels) {
+                for (double share : shares) {
+                    for (long t : times) {
+                        String s = ProgressLine.line(label, share, t, width);
+                        assertTrue(s.length() <= width, width + " columns: " + s);
+                        if (width >= 4) {
+                            assertTrue(s.contains((int) Math.floor(100 * share) + "%"), width + " columns keeps the percentage: " + s);
+                        }
+                    }
+                }
+            }
+        }
+        String sixty = ProgressLine.line("scenes/showcase.txt", 0.42, 12_000_000_000L, 59);
+        assertTrue(sixty.startsWith("...") && sixty.endsWith("] 12.0 s, about 16.6 s left") && sixty.length() == 59, sixty);
+        String forty = ProgressLine.line("scenes/showcase.txt", 0.42, 12_000_000_000L, 39);
+        assertTrue(forty.endsWith("] 12.0 s") && forty.contains(".txt  42% [") && forty.length() == 39, "40 columns: the time left goes: " + forty);
+    }
+
+    @Test
+    void redrawAndClearStayWithinTheTerminalsWidth() {
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+        int[] columns = {80};
+        ProgressLine p = new ProgressLine(new PrintStream(bytes, true, StandardCharsets.UTF_8), "scenes/showcase-extensions.txt", 100,
+                () -> columns[0]);
+        p.tileDone(null, 0, 0, 10, 5, 1, 2);
+        assertTrue(p.redraw());
+        columns[0] = 40;                                   // the window made narrower mid-render
+        assertTrue(p.redraw());
+        p.clear();
+        String all = bytes.toString(StandardCharsets.UTF_8);
+        String[] pieces = all.split("\r", -1);
+        for (int i = 1; i < pieces.length; i++) {
+            assertTrue(pieces[i].length() <= (i == 1 ? 79 : 39), "piece " + i + " is " + pieces[i].length() + " columns: '" + pieces[i] + "'");
+        }
+        assertTrue(all.endsWith("\r"), "the cursor is back at the start of an erased line");
+        assertTrue(pieces[pieces.length - 2].isBlank());
+    }
 }
