@@ -31,6 +31,14 @@ public class IntersectionRecord {
     public boolean frontFace = true;
     /** Absolute bound on the rounding error of each coordinate of {@code location}; 0 = unknown. */
     public double error;
+    /**
+     * Where rays leaving on the normal's side start from, relative to {@code location}: set by a smooth
+     * mesh (Hanika's shadow-terminator lift, {@code ray.surface.Mesh}) for the hit at {@link #liftT} on
+     * {@link #liftSurface}, and ignored for any other hit, so no other surface has to clear it.
+     */
+    public final Vector3d lift = new Vector3d();
+    public Surface liftSurface;
+    public double liftT;
 
     public IntersectionRecord() {
     }
@@ -43,6 +51,9 @@ public class IntersectionRecord {
         surface = other.surface;
         frontFace = other.frontFace;
         error = other.error;
+        lift.set(other.lift);
+        liftSurface = other.liftSurface;
+        liftT = other.liftT;
     }
 
     /** A new ray leaving the surface along {@code direction}, starting just off the surface on that side. */
@@ -96,17 +107,25 @@ public class IntersectionRecord {
      * The spawn point for a ray leaving along (dx, dy, dz): the hit point moved along the normal, to the
      * side the ray leaves on, by the error bound (the L1 norm of the normal makes the step cover the
      * bound in every coordinate; Wächter and Binder, Ray Tracing Gems ch. 6; pbrt-v4 OffsetRayOrigin).
+     * A ray leaving a smooth mesh on its normal's side starts from the lifted point instead
+     * ({@link #lift}: Hanika's shadow-terminator fix), so the flat facet under a smooth normal does not
+     * shadow itself near the terminator.
      */
     private void offsetOrigin(double dx, double dy, double dz, Vector3d out) {
         double nx = normal.x, ny = normal.y, nz = normal.z;
         double err = error > 0 ? error : fallbackError();
         double d = err * (Math.abs(nx) + Math.abs(ny) + Math.abs(nz));
+        double x = location.x, y = location.y, z = location.z;
         if (nx * dx + ny * dy + nz * dz < 0) {
             d = -d;
+        } else if (liftSurface == surface && liftT == t && surface != null) {
+            x += lift.x;
+            y += lift.y;
+            z += lift.z;
         }
-        out.x = location.x + d * nx;
-        out.y = location.y + d * ny;
-        out.z = location.z + d * nz;
+        out.x = x + d * nx;
+        out.y = y + d * ny;
+        out.z = z + d * nz;
     }
 
     /** For surfaces that leave {@code error} unset: a bound generous enough for a textbook quadratic. */

@@ -179,10 +179,12 @@ public class Mesh extends Surface {
 
     /**
      * Completes a record {@link Triangle#fill} made for triangle {@code t} (point, facet normal, error):
-     * the smooth normal from the barycentrics, the back side of a two-sided mesh, the surface.
+     * the smooth normal from the barycentrics, the back side of a two-sided mesh, the surface, and for a
+     * smooth hit the lift that spawned rays start from ({@link IntersectionRecord#lift}).
      */
     void finishHit(int t, double b0, double b1, double b2, boolean back, IntersectionRecord rec) {
         int[] cn = cornerNormals;
+        boolean lifted = false;
         if (cn != null) {
             int n0 = 3 * cn[3 * t], n1 = 3 * cn[3 * t + 1], n2 = 3 * cn[3 * t + 2];
             if (n0 >= 0 && n1 >= 0 && n2 >= 0) {
@@ -197,14 +199,55 @@ public class Mesh extends Surface {
                         len = -len;
                     }
                     rec.normal.set(x / len, y / len, z / len);
+                    lifted = lift(t, b0, b1, b2, n0, n1, n2, (len < 0) != back ? -1 : 1, rec);
                 }
             }
+        }
+        if (!lifted) {
+            rec.liftSurface = null;
         }
         if (back) {
             rec.normal.negate();
             rec.frontFace = false;
         }
         rec.surface = this;
+    }
+
+    /**
+     * Hanika's shadow-terminator fix ("Hacking the Shadow Terminator", Ray Tracing Gems II, ch. 4, 2021):
+     * a flat facet under a smooth normal shadows itself near the terminator, so rays leave from the point
+     * the corners' tangent planes (of their normals, {@code sign} turning them to the side the ray sees)
+     * would have: each corner's vector to the hit, with its part below that corner's tangent plane taken
+     * out, blended with the barycentrics. On a facet that curves away (a convex part) this lifts the point
+     * off the flat facet by about the curved surface's height there; on a concave part it is the hit
+     * itself. Stored as a displacement, used only by {@link IntersectionRecord}'s offset of spawned rays.
+     */
+    private boolean lift(int t, double b0, double b1, double b2, int n0, int n1, int n2, int sign, IntersectionRecord rec) {
+        float[] n = normals;
+        double px = rec.location.x, py = rec.location.y, pz = rec.location.z;
+        // per corner k: b_k times the part of (p - corner) below the corner's tangent plane, along its normal
+        int c0 = 3 * triangles[3 * t], c1 = 3 * triangles[3 * t + 1], c2 = 3 * triangles[3 * t + 2];
+        double k0 = b0 * below(px, py, pz, c0, n0, sign), k1 = b1 * below(px, py, pz, c1, n1, sign),
+                k2 = b2 * below(px, py, pz, c2, n2, sign);
+        double lx = sign * (k0 * n[n0] + k1 * n[n1] + k2 * n[n2]);
+        double ly = sign * (k0 * n[n0 + 1] + k1 * n[n1 + 1] + k2 * n[n2 + 1]);
+        double lz = sign * (k0 * n[n0 + 2] + k1 * n[n1 + 2] + k2 * n[n2 + 2]);
+        if (!(lx != 0 || ly != 0 || lz != 0) || !Double.isFinite(lx + ly + lz)) {
+            return false;
+        }
+        rec.lift.set(lx, ly, lz);
+        rec.liftSurface = this;
+        rec.liftT = rec.t;
+        return true;
+    }
+
+    /** -min(0, (p - corner) . n) / |n|^2 for corner position index {@code c} and normal index {@code m} ({@code sign} turning n). */
+    private double below(double px, double py, double pz, int c, int m, int sign) {
+        float[] n = normals;
+        double nx = sign * n[m], ny = sign * n[m + 1], nz = sign * n[m + 2];
+        double nn = nx * nx + ny * ny + nz * nz;
+        double d = (px - positions[c]) * nx + (py - positions[c + 1]) * ny + (pz - positions[c + 2]) * nz;
+        return d < 0 && nn > 0 ? -d / nn : 0;
     }
 
     boolean twoSided() {
