@@ -336,7 +336,15 @@ final class ImageView extends JComponent implements Scrollable {
             zoom.out(s0);
         }
         if (vp != null) {
-            vp.doLayout();                                      // the new size now, to place the view
+            // the new size now, to place the view: the pane's layout too, since scroll bars that appear or go
+            // change the viewport's extent (twice: a bar can bring the other one)
+            JScrollPane sp = (JScrollPane) SwingUtilities.getAncestorOfClass(JScrollPane.class, this);
+            for (int i = 0; i < 2; i++) {
+                if (sp != null) {
+                    sp.doLayout();
+                }
+                vp.doLayout();
+            }
             Rectangle after = imageBounds();
             double s1 = scale();
             Dimension size = getSize(), extent = vp.getExtentSize();
