@@ -135,8 +135,9 @@ final class ImageView extends JComponent implements Scrollable {
     void reset(Image filling) {
         linear = filling;
         complete = false;
-        shown = new BufferedImage(filling.width, filling.height, BufferedImage.TYPE_INT_RGB);
         bytes = new BufferedImage(filling.width, filling.height, BufferedImage.TYPE_INT_RGB);
+        // at exposure 0 what is shown is the PNG's bytes: one image, written once per tile
+        shown = exposure == 0 ? bytes : new BufferedImage(filling.width, filling.height, BufferedImage.TYPE_INT_RGB);
         compareStale = true;
         changed();
     }
@@ -161,16 +162,19 @@ final class ImageView extends JComponent implements Scrollable {
             return;
         }
         double gain = Math.pow(2, exposure);
-        int[] row = new int[x1 - x0], raw = new int[x1 - x0];
+        boolean exposed = bytes != b;
+        int[] row = exposed ? new int[x1 - x0] : null, raw = new int[x1 - x0];
         for (int y = y0; y < y1; y++) {
             for (int x = x0; x < x1; x++) {
                 int i = 3 * (y * image.width + x);
                 raw[x - x0] = rgb(image.rgb, i, 1);
-                row[x - x0] = exposure == 0 ? raw[x - x0] : rgb(image.rgb, i, gain);
+                if (exposed) {
+                    row[x - x0] = rgb(image.rgb, i, gain);
+                }
             }
-            b.setRGB(x0, y, x1 - x0, 1, row, 0, row.length);
-            if (bytes != b) {
-                bytes.setRGB(x0, y, x1 - x0, 1, raw, 0, raw.length);
+            bytes.setRGB(x0, y, x1 - x0, 1, raw, 0, raw.length);
+            if (exposed) {
+                b.setRGB(x0, y, x1 - x0, 1, row, 0, row.length);
             }
         }
         compareStale = true;
