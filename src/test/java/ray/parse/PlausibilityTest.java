@@ -53,7 +53,7 @@ class PlausibilityTest {
         Path scene = Files.writeString(dir.resolve("s.txt"), SCENE);
         ByteArrayOutputStream out = new ByteArrayOutputStream(), err = new ByteArrayOutputStream();
         int status = Main.run(new PrintStream(out, true, StandardCharsets.UTF_8), new PrintStream(err, true, StandardCharsets.UTF_8),
-                "-q", scene.toString());
+                scene.toString());          // (not -q: it keeps only errors)
         assertEquals(0, status, err.toString(StandardCharsets.UTF_8));
         assertTrue(Files.size(dir.resolve("s.png")) > 0, "rendered");
         List<String> lines = err.toString(StandardCharsets.UTF_8).lines().toList();
