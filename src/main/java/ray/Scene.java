@@ -185,7 +185,7 @@ public class Scene {
             return;
         }
         Material m = rec.surface.material;
-        m.shade(ray, rec, this, ctx, out);
+        m.shadeHit(ray, rec, this, ctx, out);
     }
 
     /**

@@ -137,7 +137,7 @@ public final class Bvh implements Accelerator {
     }
 
     private static PrimitiveSet.Type typeOf(Surface s) {
-        PrimitiveSet.Type t = s.primitiveType();
+        PrimitiveSet.Type t = s.packedType();
         return t == null ? SurfaceSet.TYPE : t;
     }
 
@@ -179,7 +179,7 @@ public final class Bvh implements Accelerator {
         long t0 = System.nanoTime();
         List<Surface> surfaces = new ArrayList<>(sceneSurfaces.size());
         for (Surface s : sceneSurfaces) {
-            s.collectPrimitives(surfaces);
+            s.addPrimitives(surfaces);
         }
         List<Surface> bounded = new ArrayList<>(surfaces.size());
         List<Surface> unbounded = new ArrayList<>();

@@ -52,7 +52,7 @@ final class JitPolicy {
     static double expectedRays(RenderPlan plan) {
         double perPoint = 0;
         for (Light l : plan.lights()) {
-            int n = l.shadowRaysPerPoint();
+            int n = l.plannedShadowRays();
             perPoint += n < 0 ? 1 : n;
         }
         return plan.bound().get(RayKind.CAMERA) * (1 + perPoint);

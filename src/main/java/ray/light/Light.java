@@ -2,6 +2,7 @@ package ray.light;
 
 import javax.vecmath.Vector3d;
 import ray.IntersectionRecord;
+import ray.Overrides;
 import ray.Scene;
 import ray.SceneObject;
 
@@ -17,6 +18,26 @@ import ray.SceneObject;
  */
 public abstract class Light implements SceneObject {
 
+    private static final Class<?>[] FRAMEWORK = {IntersectionRecord.class, Scene.class};
+
+    /**
+     * True for a class whose {@code getIntensity} is declared below its {@code sample} (a student's
+     * {@code MyLight extends PointLight} overriding only {@code getIntensity}): the renderer then samples
+     * through {@code getIntensity}, and the plan believes only declarations made at or below it.
+     */
+    private static final ClassValue<Boolean> FRAMEWORK_INTENSITY = Overrides.perClass(c -> Overrides.strictlyBelow(
+            Overrides.declarer(c, "getIntensity", FRAMEWORK),
+            Overrides.declarer(c, "sample", IntersectionRecord.class, Scene.class, int.class, LightSample.class)));
+    private static final ClassValue<Boolean> TRUSTED_DARK = trusted("isDark");
+    private static final ClassValue<Boolean> TRUSTED_RAYS = trusted("shadowRaysPerPoint");
+
+    private static ClassValue<Boolean> trusted(String declaration) {
+        return Overrides.perClass(c -> !FRAMEWORK_INTENSITY.get(c) || !Overrides.strictlyBelow(
+                Overrides.declarer(c, "getIntensity", FRAMEWORK), Overrides.declarer(c, declaration)));
+    }
+
+    private final boolean frameworkIntensity = FRAMEWORK_INTENSITY.get(getClass());
+
     /** The light arriving at {@code record.location}, zero where a surface lies between (shadow). */
     public abstract Vector3d getIntensity(IntersectionRecord record, Scene scene);
 
@@ -30,6 +51,42 @@ public abstract class Light implements SceneObject {
      * false when nothing arrives from it (then {@code out} is undefined).
      */
     public boolean sample(IntersectionRecord record, Scene scene, int index, LightSample out) {
+        return sampleFramework(record, scene, out);
+    }
+
+    /**
+     * How many samples the renderer draws per shading point: {@link #sampleCount()}, or 1 when this
+     * object's class overrides {@code getIntensity} below its {@code sample} (see {@link #renderSample}).
+     */
+    public final int renderSampleCount() {
+        return frameworkIntensity ? 1 : sampleCount();
+    }
+
+    /**
+     * What the renderer calls: {@link #sample}, unless this object's class overrides the framework's
+     * {@code getIntensity} below the class that wrote {@code sample} (then the light arrives through
+     * {@code getIntensity}, as for a light that implements only it).
+     */
+    public final boolean renderSample(IntersectionRecord record, Scene scene, int index, LightSample out) {
+        return frameworkIntensity ? sampleFramework(record, scene, out) : sample(record, scene, index, out);
+    }
+
+    /** True when this object's class overrides {@code getIntensity} below its {@code sample} (see {@link #renderSample}). */
+    public final boolean usesFrameworkIntensity() {
+        return frameworkIntensity;
+    }
+
+    /** {@link #isDark()} as the render plan reads it: false when the class overrides {@code getIntensity} below the class that declared it. */
+    public final boolean plannedDark() {
+        return TRUSTED_DARK.get(getClass()) && isDark();
+    }
+
+    /** {@link #shadowRaysPerPoint()} as the render plan reads it: unknown under the same rule as {@link #plannedDark()}. */
+    public final int plannedShadowRays() {
+        return TRUSTED_RAYS.get(getClass()) ? shadowRaysPerPoint() : UNKNOWN_RAYS;
+    }
+
+    private boolean sampleFramework(IntersectionRecord record, Scene scene, LightSample out) {
         Vector3d i = getIntensity(record, scene);
         if (i == null || !(i.x > 0 || i.y > 0 || i.z > 0)) {
             return false;

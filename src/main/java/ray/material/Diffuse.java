@@ -97,8 +97,8 @@ public class Diffuse extends Material {
         Vector3d ks = specularColorOrNull();   // null: no highlight term at all (plain Diffuse)
         for (int k = 0; k < ls.length; k++) {   // k: the occluder cache's slot for this light's shadow rays
             Light light = ls[k];
-            for (int i = 0, count = light.sampleCount(); i < count; i++) {
-                if (!light.sample(rec, scene, i, s)) {
+            for (int i = 0, count = light.renderSampleCount(); i < count; i++) {
+                if (!light.renderSample(rec, scene, i, s)) {
                     continue;
                 }
                 Vector3d l = s.direction;

@@ -61,7 +61,7 @@ public class GlazedMaterial extends Material {
     public Set<Term> terms() {
         Set<Term> t = EnumSet.noneOf(Term.class);
         if (base != null) {
-            t.addAll(base.terms());
+            t.addAll(base.plannedTerms());
         }
         if (mirrorCoefficient != 0) {
             t.add(Term.MIRROR);
@@ -92,7 +92,7 @@ public class GlazedMaterial extends Material {
             k += Math.abs(level.mirrorCoefficient);
         }
         Material bottom = levels.get(levels.size() - 1).base;
-        HitCost b = bottom == null ? HitCost.of(EnumSet.noneOf(Term.class)) : bottom.hitCost(plan);
+        HitCost b = bottom == null ? HitCost.of(EnumSet.noneOf(Term.class)) : bottom.plannedCost(plan);
         int own = plan.foldsGlazedChains() ? Math.min(rays, 1) : rays;
         double weight = b.mirrorRays() + b.refractionRays() > 0 || b.unknown() ? Double.POSITIVE_INFINITY : k;
         return new HitCost(terms(), own + b.mirrorRays(), b.refractionRays(), b.evaluatesLights(), weight, levels.size());
@@ -152,7 +152,7 @@ public class GlazedMaterial extends Material {
         Material b = planned ? foldedBase : base;
         int mirrors = planned ? coefficients.length : mirrorCoefficient == 0 ? 0 : 1;
         if (b != null) {
-            b.shade(ray, rec, scene, ctx, out);
+            b.shadeHit(ray, rec, scene, ctx, out);
         } else {
             out.set(0, 0, 0);
         }

@@ -5,6 +5,7 @@ import java.util.List;
 import java.util.Set;
 import javax.vecmath.Vector3d;
 import ray.IntersectionRecord;
+import ray.Overrides;
 import ray.Ray;
 import ray.Scene;
 import ray.SceneObject;
@@ -17,10 +18,30 @@ import ray.TraceContext;
  * <p>The renderer calls the allocation-free {@link #shade(Ray, IntersectionRecord, Scene,
  * TraceContext, Vector3d)}; its default calls {@link #shade(Ray, IntersectionRecord, Scene)}, so a
  * material written against the framework works unchanged. Built-in materials implement the fast form
- * and let the framework form call it. A framework-form {@code shade} that returns null or a NaN colour stops
+ * and let the framework form call it; the renderer calls {@link #shadeHit}, which takes the fast form
+ * unless a subclass overrides the framework form below it (a student's {@code MyDiffuse extends Diffuse}
+ * overriding only {@code shade(ray, record, scene)} is shaded by its override). A framework-form {@code shade} that returns null or a NaN colour stops
  * the render with a {@link BadColorException} naming the class and the pixel.
  */
 public abstract class Material implements SceneObject {
+
+    private static final Class<?>[] FRAMEWORK = {Ray.class, IntersectionRecord.class, Scene.class};
+    private static final Class<?>[] FAST = {Ray.class, IntersectionRecord.class, Scene.class, TraceContext.class, Vector3d.class};
+
+    /**
+     * True for a class whose framework {@code shade} is declared below its fast form (a student's
+     * {@code MyDiffuse extends Diffuse} overriding only {@code shade(ray, record, scene)}): the renderer
+     * then calls the framework form, and the plan believes only declarations made at or below it.
+     */
+    private static final ClassValue<Boolean> FRAMEWORK_SHADE = Overrides.perClass(c -> Overrides.strictlyBelow(
+            Overrides.declarer(c, "shade", FRAMEWORK), Overrides.declarer(c, "shade", FAST)));
+    private static final ClassValue<Boolean> TRUSTED_TERMS = Overrides.perClass(c -> !FRAMEWORK_SHADE.get(c)
+            || !Overrides.strictlyBelow(Overrides.declarer(c, "shade", FRAMEWORK), Overrides.declarer(c, "terms")));
+    private static final ClassValue<Boolean> TRUSTED_COST = Overrides.perClass(c -> !FRAMEWORK_SHADE.get(c)
+            || !Overrides.strictlyBelow(Overrides.declarer(c, "shade", FRAMEWORK),
+                    Overrides.declarer(c, "hitCost", ShadingPlan.class)));
+
+    private final boolean frameworkShade = FRAMEWORK_SHADE.get(getClass());
 
     public abstract Vector3d shade(Ray ray, IntersectionRecord record, Scene scene);
 
@@ -29,6 +50,42 @@ public abstract class Material implements SceneObject {
      * only {@code ctx}'s scratch objects. {@code record} belongs to the caller and must not be kept.
      */
     public void shade(Ray ray, IntersectionRecord record, Scene scene, TraceContext ctx, Vector3d out) {
+        shadeFramework(ray, record, scene, ctx, out);
+    }
+
+    /**
+     * What the renderer calls for a hit: the fast form {@link #shade(Ray, IntersectionRecord, Scene,
+     * TraceContext, Vector3d)}, unless this object's class overrides the framework form below the class
+     * that wrote the fast one (then the framework form, so a student's override of a built-in is used).
+     */
+    public final void shadeHit(Ray ray, IntersectionRecord record, Scene scene, TraceContext ctx, Vector3d out) {
+        if (frameworkShade) {
+            shadeFramework(ray, record, scene, ctx, out);
+        } else {
+            shade(ray, record, scene, ctx, out);
+        }
+    }
+
+    /** True when this object's class overrides the framework {@code shade} below its fast form (see {@link #shadeHit}). */
+    public final boolean usesFrameworkShade() {
+        return frameworkShade;
+    }
+
+    /**
+     * {@link #terms()} as the render plan reads it: every term when the class overrides the framework
+     * {@code shade} below the class that declared its terms (an inherited declaration does not describe
+     * a {@code shade} written after it).
+     */
+    public final Set<Term> plannedTerms() {
+        return TRUSTED_TERMS.get(getClass()) ? terms() : EnumSet.allOf(Term.class);
+    }
+
+    /** {@link #hitCost} as the render plan reads it, with the same rule as {@link #plannedTerms()}. */
+    public final HitCost plannedCost(ShadingPlan plan) {
+        return TRUSTED_COST.get(getClass()) ? hitCost(plan) : HitCost.of(plannedTerms());
+    }
+
+    private void shadeFramework(Ray ray, IntersectionRecord record, Scene scene, TraceContext ctx, Vector3d out) {
         // a ray this code traces (scene.trace) is one bounce deeper than the ray being shaded, so it
         // gets the next depth's record and never the one passed in here
         int saved = ctx.level;

@@ -32,7 +32,7 @@ final class Geometry {
             for (Surface o : s.operands()) {
                 p += leaves(o, t.operands);
             }
-            t.primitives += s.operands().isEmpty() ? s.primitiveCount() : p;
+            t.primitives += s.operands().isEmpty() ? s.plannedPrimitiveCount() : p;
         }
         StringBuilder b = new StringBuilder();
         for (Map.Entry<String, Tally> e : bounded.entrySet()) {
@@ -69,7 +69,7 @@ final class Geometry {
             return t;
         }
         out.computeIfAbsent(s.getClass().getSimpleName(), k -> new int[1])[0]++;
-        return s.primitiveCount();
+        return s.plannedPrimitiveCount();
     }
 
     private static String list(Map<String, int[]> counts) {

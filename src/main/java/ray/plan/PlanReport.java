@@ -67,8 +67,8 @@ public final class PlanReport {
                 : refraction.isEmpty() ? "no material refracts" : "MaxDepth 0", RayKind.REFRACTION));
         List<String> sampled = new ArrayList<>();
         for (Light l : plan.lights()) {
-            if (!plan.unknownLights.contains(l) && l.shadowRaysPerPoint() > 1) {
-                sampled.add(label(l) + " " + l.shadowRaysPerPoint());
+            if (!plan.unknownLights.contains(l) && l.plannedShadowRays() > 1) {
+                sampled.add(label(l) + " " + l.plannedShadowRays());
             }
         }
         effects.add(new Effect("area-light samples", lit && !sampled.isEmpty(), sampled.isEmpty() ? "no sampled light"
@@ -93,7 +93,7 @@ public final class PlanReport {
             Light l = s.lights.get(i);
             lightLines.add(label(l) + ": " + (plan.dark.contains(l) ? "zero intensity, skipped"
                     : plan.unknownLights.contains(l) ? "a user's light: evaluated through its own code, rays unknown"
-                    : l.shadowRaysPerPoint() + " shadow ray" + (l.shadowRaysPerPoint() == 1 ? "" : "s") + " per lit point"));
+                    : l.plannedShadowRays() + " shadow ray" + (l.plannedShadowRays() == 1 ? "" : "s") + " per lit point"));
         }
         savings(s, used);
     }

@@ -45,7 +45,7 @@ public final class RayBound {
         }
         double perPoint = 0;
         for (ray.light.Light l : plan.lights()) {
-            perPoint += plan.unknownLights.contains(l) ? Double.POSITIVE_INFINITY : l.shadowRaysPerPoint();
+            perPoint += plan.unknownLights.contains(l) ? Double.POSITIVE_INFINITY : l.plannedShadowRays();
         }
         int depth = Math.max(0, plan.settings().maxDepth());
         if (plan.cutsFaintPaths()) {

@@ -56,11 +56,11 @@ public final class RenderPlan implements ShadingPlan {
         this.skips = skips.isEmpty() ? NO_SKIPS : Collections.unmodifiableSet(EnumSet.copyOf(skips));
         List<Light> evaluated = new ArrayList<>();
         for (Light l : scene.lights) {   // a light's own declarations, inherited where its class does not change them
-            if (l.isDark() && this.skips.contains(Skip.DARK_LIGHTS)) {
+            if (l.plannedDark() && this.skips.contains(Skip.DARK_LIGHTS)) {
                 dark.add(l);
                 continue;
             }
-            if (l.shadowRaysPerPoint() < 0) {
+            if (l.plannedShadowRays() < 0) {
                 unknownLights.add(l);
             }
             evaluated.add(l);

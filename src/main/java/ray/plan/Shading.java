@@ -44,6 +44,6 @@ final class Shading {
     private static final Shading NONE = new Shading(HitCost.of(EnumSet.noneOf(Term.class)));
 
     static Shading of(Material m, RenderPlan plan) {
-        return m == null ? NONE : new Shading(m.hitCost(plan));
+        return m == null ? NONE : new Shading(m.plannedCost(plan));
     }
 }

@@ -2,6 +2,7 @@ package ray.surface;
 
 import java.util.List;
 import ray.IntersectionRecord;
+import ray.Overrides;
 import ray.Ray;
 import ray.Scene;
 import ray.SceneObject;
@@ -17,6 +18,48 @@ import ray.material.Material;
  * tested against every ray (correct, just slower).
  */
 public abstract class Surface implements SceneObject {
+
+    private static final Class<?>[] INTERSECTS = {Ray.class, IntersectionRecord.class, Scene.class};
+
+    /**
+     * Per class: whether a built-in's fast path is still this class's own, i.e. {@code intersects} is
+     * not overridden below the class that declared it (a student's {@code MySphere extends Sphere} or
+     * {@code MyMesh extends Mesh} overriding only {@code intersects} is tested by its override).
+     */
+    private static final ClassValue<Boolean> OWN_PACKED_TYPE = fastPathFor("primitiveType");
+    private static final ClassValue<Boolean> OWN_PARTS = fastPathFor("collectPrimitives", List.class);
+    private static final ClassValue<Boolean> OWN_COUNT = fastPathFor("primitiveCount");
+
+    private static ClassValue<Boolean> fastPathFor(String name, Class<?>... params) {
+        return Overrides.perClass(c -> !Overrides.strictlyBelow(
+                Overrides.declarer(c, "intersects", INTERSECTS), Overrides.declarer(c, name, params)));
+    }
+
+    /**
+     * What the BVH holds for this surface (called once per build): {@link #collectPrimitives}'s parts, or
+     * this surface itself when its class overrides {@code intersects} below the class that split it.
+     */
+    public final void addPrimitives(List<Surface> out) {
+        if (OWN_PARTS.get(getClass())) {
+            collectPrimitives(out);
+        } else {
+            out.add(this);
+        }
+    }
+
+    /** {@link #primitiveCount()} under the rule of {@link #addPrimitives}. */
+    public final long plannedPrimitiveCount() {
+        return OWN_COUNT.get(getClass()) && OWN_PARTS.get(getClass()) ? primitiveCount() : 1;
+    }
+
+    /**
+     * The packed type the BVH uses (once per build): {@link #primitiveType()}, or null (the generic set,
+     * which calls {@code intersects}) when the class overrides {@code intersects} below the class that
+     * chose the type.
+     */
+    public final ray.accel.PrimitiveSet.Type packedType() {
+        return OWN_PACKED_TYPE.get(getClass()) ? primitiveType() : null;
+    }
 
     /** {@code ref material <name>} in a scene file. */
     public Material material;
