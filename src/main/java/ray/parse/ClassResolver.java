@@ -49,9 +49,8 @@ final class ClassResolver {
 
     private Class<?> lookUp(String type, String name) throws Problem {
         Class<?> base = BASES.get(type);
-        String expected = " (expected " + builtIns(type) + " or a " + type + " class of your own)";
         if (!isClassName(name)) {
-            throw new Problem(Values.quote(name) + " is not a class name" + expected);
+            throw new Problem(Values.quote(name) + " is not a class name" + expected(type));
         }
         String canonical = ALIASES.getOrDefault(name, name);
         Class<?> c = find(canonical);
@@ -64,10 +63,10 @@ final class ClassResolver {
         // everything up to here only loaded the class; nothing of it has run
         if (!base.isAssignableFrom(c)) {
             String what = kindOf(c);
-            throw new Problem(Values.quote(name) + " is " + (what == null ? "not a " + type : "a " + what + ", not a " + type) + expected);
+            throw new Problem(Values.quote(name) + " is " + (what == null ? "not a " + type : "a " + what + ", not a " + type) + expected(type));
         }
         if (c.isInterface() || Modifier.isAbstract(c.getModifiers())) {
-            throw new Problem(Values.quote(name) + " is abstract and cannot be created" + expected);
+            throw new Problem(Values.quote(name) + " is abstract and cannot be created" + expected(type));
         }
         if (!Modifier.isPublic(c.getModifiers())) {
             throw new Problem("class " + Values.quote(name) + " is not public (expected a public class with a public no-argument constructor)");
@@ -81,6 +80,15 @@ final class ClassResolver {
             throw new Problem("class " + Values.quote(name) + " has no public no-argument constructor (expected one, as scene objects are created empty)");
         }
         return c;
+    }
+
+    /**
+     * The end of a message about a header's class: the built-ins it could name. Built only when a message
+     * needs it: the list comes from scanning the class path ({@link BuiltIns}), which a scene without
+     * mistakes must not pay for at every start.
+     */
+    private static String expected(String type) {
+        return " (expected " + builtIns(type) + " or a " + type + " class of your own)";
     }
 
     /** A Java class name, simple or qualified: identifiers separated by single dots, not absurdly long. */
