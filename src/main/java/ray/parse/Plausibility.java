@@ -4,7 +4,6 @@ import java.lang.reflect.Field;
 import java.lang.reflect.Modifier;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
 import javax.vecmath.Vector3d;
 import ray.light.Light;
 import ray.material.Material;
@@ -46,17 +45,18 @@ final class Plausibility {
                     continue;
                 }
                 double min, max;
-                String shown;
                 if (v instanceof Vector3d d) {
                     min = Math.min(d.x, Math.min(d.y, d.z));
                     max = Math.max(d.x, Math.max(d.y, d.z));
-                    shown = "[" + num(d.x) + " " + num(d.y) + " " + num(d.z) + "]";
                 } else if (v instanceof Double d) {
                     min = max = d;
-                    shown = num(d);
                 } else {
                     continue;
                 }
+                if (min >= 0 && (max <= 1 || intensity)) {
+                    continue;   // plausible: no message, so nothing formatted (this runs for every scene)
+                }
+                String shown = v instanceof Vector3d d ? "[" + num(d.x) + " " + num(d.y) + " " + num(d.z) + "]" : num((Double) v);
                 if (min < 0) {
                     out.add(new String[] {name, name + " " + shown + " is negative"
                             + (intensity ? ": the light takes light away" : ": the surface gives out negative light") + " (rendered as given)"});
@@ -70,6 +70,6 @@ final class Plausibility {
     }
 
     private static String num(double v) {
-        return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : String.format(Locale.ROOT, "%s", v);
+        return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : Double.toString(v);
     }
 }

@@ -1,7 +1,6 @@
 package ray.settings;
 
 import java.util.List;
-import java.util.Locale;
 
 /**
  * The render settings, one row each: the scene global that sets it, the command-line option that
@@ -123,6 +122,6 @@ public enum RenderOption {
     }
 
     private static String number(double v) {
-        return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : String.format(Locale.ROOT, "%s", v);
+        return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : Double.toString(v);
     }
 }
