@@ -8,8 +8,8 @@ the mean, a few percentiles and the whole error map rounded to 5 decimals
 implementation (ray.judge.Flip) with these numbers. The tests never run this script; run it by hand
 after changing the pairs, and commit what it writes:
 
-    python3 -m venv /tmp/flip-venv && /tmp/flip-venv/bin/pip install flip-evaluator==1.7 numpy pillow
-    /tmp/flip-venv/bin/python tools/flip_reference.py
+    python3 -m venv .venv-flip && .venv-flip/bin/pip install flip-evaluator==1.7 numpy pillow
+    .venv-flip/bin/python tools/flip_reference.py
 
 The "render" pairs crop real renders of this engine (reference-images/*.png); the others are drawn
 here (edges, a disc with and without anti-aliasing, colour shifts, noise), all from fixed seeds.
