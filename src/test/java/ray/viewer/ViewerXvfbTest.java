@@ -158,8 +158,11 @@ class ViewerXvfbTest {
     }
 
     @Test
-    void closingTheWindowMidRenderEndsTheProcessWithinTwoSeconds() throws Exception {
-        Path scene = Files.writeString(work.resolve("slow.txt"), RenderSessionTest.SLOW);   // minutes of work
+    void closingTheWindowMidRenderEndsTheProcessWithoutFinishingTheRender() throws Exception {
+        // 1600x1200 at 12x12 samples: minutes of work on any machine, so a process that waited for the render
+        // to finish would still run after 20 s; the bound is generous because a loaded machine (xdotool's key
+        // event, AWT's shutdown) can take seconds where an idle one takes about 0.2 s (printed below).
+        Path scene = Files.writeString(work.resolve("slow.txt"), RenderSessionTest.SLOW);
         Process viewer = startViewer(scene);
         try {
             String window = waitForWindow("RayTracer viewer - slow.txt", viewer);   // titled once rendering starts
@@ -168,8 +171,8 @@ class ViewerXvfbTest {
             focus(window);
             key("ctrl+w");
             long t0 = System.nanoTime();
-            boolean ended = viewer.waitFor(2, TimeUnit.SECONDS);
-            assertTrue(ended, "the process still runs 2 s after its only window was closed");
+            boolean ended = viewer.waitFor(20, TimeUnit.SECONDS);
+            assertTrue(ended, "the process still runs 20 s after its only window was closed (is it finishing the render?)");
             assertEquals(0, viewer.exitValue());
             System.out.printf("viewer process ended %.2f s after Close window%n", (System.nanoTime() - t0) / 1e9);
         } finally {
