@@ -42,7 +42,7 @@ public final class CostGate {
 
     /** The one-line refusal for {@code plan}'s scene, or null when its bound is below {@link #MAX_RAYS} or unknown. */
     public static String refusal(String sceneName, RenderPlan plan) {
-        RayBound b = plan.bound();
+        RayCountBound b = plan.bound();
         double total = b.total();
         if (!(total > MAX_RAYS) || !Double.isFinite(total)) {
             return null;

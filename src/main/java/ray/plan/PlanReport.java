@@ -74,7 +74,7 @@ public final class PlanReport {
         effects.add(new Effect("area-light samples", lit && !sampled.isEmpty(), sampled.isEmpty() ? "no sampled light"
                 : "per lit point: " + String.join(", ", sampled), null));
         if (plan.cutsFaintPaths()) {
-            RayBound b = plan.bound();
+            RayCountBound b = plan.bound();
             effects.add(new Effect("faint paths cut", true, "inexact, --cut-faint: no mirror ray where the product of k_m along the path"
                     + " is below 1/510 (half an 8-bit step for radiance up to 1)" + (b.uncutDepth > b.depth
                     ? "; at most " + b.depth + " of MaxDepth " + b.uncutDepth + " bounces reachable" : "; no bounce provably cut"), null));
@@ -226,7 +226,7 @@ public final class PlanReport {
         return out;
     }
 
-    private static String bounds(RayBound b) {
+    private static String bounds(RayCountBound b) {
         StringBuilder t = new StringBuilder(count(b.total()) + " rays (");
         for (RayKind k : RayKind.values()) {
             t.append(k.ordinal() == 0 ? "" : ", ").append(k.key()).append(' ').append(count(b.get(k)));
@@ -259,7 +259,7 @@ public final class PlanReport {
         return j.toString();
     }
 
-    private static JsonLine bound(JsonLine j, RayBound b) {
+    private static JsonLine bound(JsonLine j, RayCountBound b) {
         for (RayKind k : RayKind.values()) {
             j.put(k.key(), b.get(k));
         }

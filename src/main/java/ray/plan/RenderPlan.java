@@ -47,7 +47,7 @@ public final class RenderPlan implements ShadingPlan {
     final Map<Material, Shading> used = new LinkedHashMap<>();
     /** Lights the plan skipped, and lights whose rays it cannot know (user classes). */
     final List<Light> dark = new ArrayList<>(), unknownLights = new ArrayList<>();
-    final RayBound bound;
+    final RayCountBound bound;
 
     private RenderPlan(Scene scene, RenderSettings settings, Set<Skip> skips) {
         this.scene = scene;
@@ -94,7 +94,7 @@ public final class RenderPlan implements ShadingPlan {
             }
         }
         materials.remove(null);
-        bound = RayBound.of(this);
+        bound = RayCountBound.of(this);
     }
 
     /**
@@ -188,7 +188,7 @@ public final class RenderPlan implements ShadingPlan {
     }
 
     /** Upper bounds on the rays of each kind this render can cast. */
-    public RayBound bound() {
+    public RayCountBound bound() {
         return bound;
     }
 }

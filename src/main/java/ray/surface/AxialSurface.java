@@ -12,7 +12,7 @@ import ray.accel.Aabb;
 public abstract class AxialSurface extends Surface {
 
     /** Relative rounding-error bound of a hit point moved back to world coordinates (generous). */
-    static final double ERROR = 64 * Frame.EPS;
+    static final double ERROR = 64 * HitMath.EPS;
 
     public Vector3d base = new Vector3d();
     public Vector3d axis = new Vector3d(0, 1, 0);
@@ -37,9 +37,9 @@ public abstract class AxialSurface extends Surface {
     @Override
     public void init() {
         String name = getClass().getSimpleName().toLowerCase(java.util.Locale.ROOT);
-        Frame.requireFinite(base, name + " base");
-        Frame.requireDirection(axis, name + " axis");
-        Frame.requirePositive(radius, name + " radius");
+        Checks.requireFinite(base, name + " base");
+        Checks.requireDirection(axis, name + " axis");
+        Checks.requirePositive(radius, name + " radius");
         frame = new Frame(axis.x, axis.y, axis.z);
         height = axis.length();
     }
@@ -55,9 +55,9 @@ public abstract class AxialSurface extends Surface {
                     double nx, double ny, double nz, boolean front) {
         Frame f = frame;
         rec.location.set(base.x + f.worldX(x, y, z), base.y + f.worldY(x, y, z), base.z + f.worldZ(x, y, z));
-        Frame.face(rec, f.worldX(nx, ny, nz), f.worldY(nx, ny, nz), f.worldZ(nx, ny, nz), front);
+        HitMath.face(rec, f.worldX(nx, ny, nz), f.worldY(nx, ny, nz), f.worldZ(nx, ny, nz), front);
         rec.t = t;
-        rec.error = ERROR * (Frame.maxAbs(base) + radius + height);
+        rec.error = ERROR * (HitMath.maxAbs(base) + radius + height);
         rec.surface = this;
     }
 
@@ -77,7 +77,7 @@ public abstract class AxialSurface extends Surface {
 
     @Override
     public Aabb bounds() {
-        double pad = 1e-12 * (Frame.maxAbs(base) + radius + height);
+        double pad = 1e-12 * (HitMath.maxAbs(base) + radius + height);
         Aabb b = new Aabb();
         for (int end = 0; end < 2; end++) {
             double r = radiusAt(end * height);

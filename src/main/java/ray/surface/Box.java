@@ -28,15 +28,15 @@ import ray.accel.Aabb;
 public class Box extends Surface {
 
     /** Relative rounding-error bound used for the spawn offset (the point itself lies on the box). */
-    static final double ERROR = 32 * Frame.EPS;
+    static final double ERROR = 32 * HitMath.EPS;
 
     public Vector3d minPoint = new Vector3d(-1, -1, -1);
     public Vector3d maxPoint = new Vector3d(1, 1, 1);
 
     @Override
     public void init() {
-        Frame.requireFinite(minPoint, "box minPoint");
-        Frame.requireFinite(maxPoint, "box maxPoint");
+        Checks.requireFinite(minPoint, "box minPoint");
+        Checks.requireFinite(maxPoint, "box maxPoint");
         if (!(minPoint.x < maxPoint.x && minPoint.y < maxPoint.y && minPoint.z < maxPoint.z)) {
             throw new IllegalArgumentException("box minPoint must be below maxPoint in every coordinate, got "
                     + minPoint + " and " + maxPoint);
@@ -91,17 +91,17 @@ public class Box extends Surface {
 
     private void fill(Ray ray, double t, int face, boolean front, IntersectionRecord rec) {
         Vector3d o = ray.origin, d = ray.direction;
-        double x = Frame.clamp(o.x + t * d.x, minPoint.x, maxPoint.x);
-        double y = Frame.clamp(o.y + t * d.y, minPoint.y, maxPoint.y);
-        double z = Frame.clamp(o.z + t * d.z, minPoint.z, maxPoint.z);
+        double x = HitMath.clamp(o.x + t * d.x, minPoint.x, maxPoint.x);
+        double y = HitMath.clamp(o.y + t * d.y, minPoint.y, maxPoint.y);
+        double z = HitMath.clamp(o.z + t * d.z, minPoint.z, maxPoint.z);
         int axis = face % 3;
         double side = face < 3 ? -1 : 1;
         double v = face < 3 ? get(minPoint, axis) : get(maxPoint, axis);
         if (axis == 0) x = v; else if (axis == 1) y = v; else z = v;
         rec.location.set(x, y, z);
-        Frame.face(rec, axis == 0 ? side : 0, axis == 1 ? side : 0, axis == 2 ? side : 0, front);
+        HitMath.face(rec, axis == 0 ? side : 0, axis == 1 ? side : 0, axis == 2 ? side : 0, front);
         rec.t = t;
-        rec.error = ERROR * Math.max(Frame.maxAbs(minPoint), Frame.maxAbs(maxPoint));
+        rec.error = ERROR * Math.max(HitMath.maxAbs(minPoint), HitMath.maxAbs(maxPoint));
     }
 
     private static double get(Vector3d v, int axis) {

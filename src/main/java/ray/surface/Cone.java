@@ -124,7 +124,7 @@ public class Cone extends AxialSurface {
         double rho = Math.sqrt(x * x + y * y);
         double nx, ny, nz;
         if (part == SIDE) {
-            z = Frame.clamp(h - (ps + tau * ds), 0, h);
+            z = HitMath.clamp(h - (ps + tau * ds), 0, h);
             double target = k * (h - z);               // the side's radius at this height
             double c = 1 / Math.sqrt(1 + kk);
             if (rho > 0 && target > 0) {

@@ -93,7 +93,7 @@ public class Cylinder extends AxialSurface {
         double nx = 0, ny = 0, nz;
         double rho = Math.sqrt(x * x + y * y);
         if (part == SIDE) {
-            z = Frame.clamp(oz + t * dz, 0, h);
+            z = HitMath.clamp(oz + t * dz, 0, h);
             if (rho > 0) {
                 nx = x / rho;
                 ny = y / rho;

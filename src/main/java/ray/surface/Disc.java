@@ -29,9 +29,9 @@ public class Disc extends Surface {
 
     @Override
     public void init() {
-        Frame.requireFinite(center, "disc center");
-        Frame.requireDirection(normal, "disc normal");
-        Frame.requirePositive(radius, "disc radius");
+        Checks.requireFinite(center, "disc center");
+        Checks.requireDirection(normal, "disc normal");
+        Checks.requirePositive(radius, "disc radius");
         frame = new Frame(normal.x, normal.y, normal.z);
     }
 
@@ -57,7 +57,7 @@ public class Disc extends Surface {
 
     @Override
     public Aabb bounds() {
-        double pad = 1e-12 * (Frame.maxAbs(center) + radius);
+        double pad = 1e-12 * (HitMath.maxAbs(center) + radius);
         double ex = radius * frame.circleExtent(0) + pad;
         double ey = radius * frame.circleExtent(1) + pad;
         double ez = radius * frame.circleExtent(2) + pad;

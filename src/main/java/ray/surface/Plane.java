@@ -24,7 +24,7 @@ import ray.Scene;
 public class Plane extends Surface {
 
     /** Relative rounding-error bound of a projected hit point (a generous gamma(32)). */
-    static final double ERROR = 32 * Frame.EPS;
+    static final double ERROR = 32 * HitMath.EPS;
 
     public Vector3d point = new Vector3d();
     public Vector3d normal = new Vector3d(0, 1, 0);
@@ -34,8 +34,8 @@ public class Plane extends Surface {
 
     @Override
     public void init() {
-        Frame.requireFinite(point, "plane point");
-        Frame.requireDirection(normal, "plane normal");
+        Checks.requireFinite(point, "plane point");
+        Checks.requireDirection(normal, "plane normal");
         double len = normal.length();
         nx = normal.x / len;
         ny = normal.y / len;
@@ -76,10 +76,10 @@ public class Plane extends Surface {
         hy -= s * ny;
         hz -= s * nz;
         rec.location.set(hx, hy, hz);
-        Frame.face(rec, nx, ny, nz, nx * d.x + ny * d.y + nz * d.z < 0);
+        HitMath.face(rec, nx, ny, nz, nx * d.x + ny * d.y + nz * d.z < 0);
         rec.t = t;
         double m = Math.max(Math.abs(hx), Math.max(Math.abs(hy), Math.abs(hz)));
-        rec.error = Math.max(ERROR * (m + Frame.maxAbs(p)), Double.MIN_NORMAL);   // > 0 at the origin too
+        rec.error = Math.max(ERROR * (m + HitMath.maxAbs(p)), Double.MIN_NORMAL);   // > 0 at the origin too
     }
 
     @Override

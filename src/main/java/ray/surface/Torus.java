@@ -44,7 +44,7 @@ import ray.accel.Aabb;
 public class Torus extends Surface {
 
     /** Relative rounding-error bound of a hit point moved back to world coordinates (generous). */
-    static final double ERROR = 64 * Frame.EPS;
+    static final double ERROR = 64 * HitMath.EPS;
     private static final int MAX_ITERATIONS = 100;
 
     public Vector3d center = new Vector3d();
@@ -56,10 +56,10 @@ public class Torus extends Surface {
 
     @Override
     public void init() {
-        Frame.requireFinite(center, "torus center");
-        Frame.requireDirection(axis, "torus axis");
-        Frame.requirePositive(majorRadius, "torus majorRadius");
-        Frame.requirePositive(minorRadius, "torus minorRadius");
+        Checks.requireFinite(center, "torus center");
+        Checks.requireDirection(axis, "torus axis");
+        Checks.requirePositive(majorRadius, "torus majorRadius");
+        Checks.requirePositive(minorRadius, "torus minorRadius");
         if (!(minorRadius < majorRadius)) {
             throw new IllegalArgumentException("torus minorRadius must be below majorRadius (a ring torus; a horn or"
                     + " spindle torus intersects itself), got minorRadius " + minorRadius + " and majorRadius " + majorRadius);
@@ -104,8 +104,8 @@ public class Torus extends Surface {
         if (disc > 0) {
             double q = -0.5 * (6 * c3 + Math.copySign(Math.sqrt(disc), c3));
             double a = q / 12, b = q == 0 ? -a : 2 * c2 / q;
-            s1 = Frame.clamp(Math.min(a, b), -half, half);
-            s2 = Frame.clamp(Math.max(a, b), -half, half);
+            s1 = HitMath.clamp(Math.min(a, b), -half, half);
+            s2 = HitMath.clamp(Math.max(a, b), -half, half);
         }
         double prev = -half;
         for (int seg = 0; seg < 4; seg++) {
@@ -119,7 +119,7 @@ public class Torus extends Surface {
                 continue;
             }
             if (next > prev) {
-                double tau = crossing(prev, next, px, py, pz, ux, uy, uz, big, r, 4 * Frame.EPS * bound);
+                double tau = crossing(prev, next, px, py, pz, ux, uy, uz, big, r, 4 * HitMath.EPS * bound);
                 if (!Double.isNaN(tau)) {
                     double t = (tc + tau) / len;
                     if (t > ray.tMax) {
@@ -246,9 +246,9 @@ public class Torus extends Surface {
         }
         double x = cx + r * nx, y = cy + r * ny, z = r * nz;
         rec.location.set(center.x + f.worldX(x, y, z), center.y + f.worldY(x, y, z), center.z + f.worldZ(x, y, z));
-        Frame.face(rec, f.worldX(nx, ny, nz), f.worldY(nx, ny, nz), f.worldZ(nx, ny, nz), entering);
+        HitMath.face(rec, f.worldX(nx, ny, nz), f.worldY(nx, ny, nz), f.worldZ(nx, ny, nz), entering);
         rec.t = t;
-        rec.error = ERROR * (Frame.maxAbs(center) + big + r);
+        rec.error = ERROR * (HitMath.maxAbs(center) + big + r);
         rec.surface = this;
     }
 
@@ -267,7 +267,7 @@ public class Torus extends Surface {
 
     @Override
     public Aabb bounds() {
-        double pad = 1e-12 * (Frame.maxAbs(center) + majorRadius + minorRadius);
+        double pad = 1e-12 * (HitMath.maxAbs(center) + majorRadius + minorRadius);
         double ex = majorRadius * frame.circleExtent(0) + minorRadius + pad;
         double ey = majorRadius * frame.circleExtent(1) + minorRadius + pad;
         double ez = majorRadius * frame.circleExtent(2) + minorRadius + pad;

@@ -148,7 +148,7 @@ public final class RenderSession {
             fail(job, job.file + ": the scene is too large for this JVM's heap (raise it, e.g. JAVA_OPTS=-Xmx16g)");
             return;
         } catch (Throwable e) {     // a user class's init() (any Error too) or a parser bug: the job must end, never hang
-            fail(job, Failures.describe(job.file + ": reading the scene failed", e));
+            fail(job, ErrorTexts.describe(job.file + ": reading the scene failed", e));
             return;
         }
         job.parseNanos = System.nanoTime() - t0;
@@ -225,13 +225,13 @@ public final class RenderSession {
         } catch (OutOfMemoryError e) {
             fail(job, job.file + ": out of memory while rendering (raise the heap, e.g. JAVA_OPTS=-Xmx16g)");
         } catch (Throwable e) {     // whatever a user's class throws (AssertionError, a checked one sneakily): never a hang
-            fail(job, Failures.describe(job.file + ": rendering failed", e));
+            fail(job, ErrorTexts.describe(job.file + ": rendering failed", e));
         }
     }
 
     private void fail(RenderJob job, String message) {
         post(job, () -> {
-            job.error = Failures.oneLine(message);
+            job.error = ray.Failures.oneLine(message);
             job.state(RenderJob.State.FAILED);
             // the last finished image comes back only if it is of this very file (a re-render that failed):
             // another scene's image, title and Save suggestion beside this file's error would mix two states

@@ -66,7 +66,7 @@ public final class SaveRules {
                     return target + " is the scene file " + scene + "; choose another name";
                 }
             } catch (IOException e) {
-                return target + ": cannot tell whether it is the scene file (" + Failures.reason(e) + ")";
+                return target + ": cannot tell whether it is the scene file (" + ErrorTexts.reason(e) + ")";
             }
         }
         return null;
@@ -85,7 +85,7 @@ public final class SaveRules {
         try {
             PngWriter.write(image, target);
         } catch (IOException | RuntimeException e) {
-            throw new SaveException("Cannot save " + target + ": " + Failures.reason(e));
+            throw new SaveException("Cannot save " + target + ": " + ErrorTexts.reason(e));
         }
     }
 
@@ -94,7 +94,7 @@ public final class SaveRules {
         private static final long serialVersionUID = 1L;
 
         SaveException(String message) {
-            super(Failures.oneLine(message), null, false, false);
+            super(ray.Failures.oneLine(message), null, false, false);
         }
     }
 }

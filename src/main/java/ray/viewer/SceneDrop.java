@@ -39,7 +39,7 @@ final class SceneDrop extends TransferHandler {
             open.accept(f.toPath());
             return true;
         } catch (UnsupportedFlavorException | IOException e) {
-            error.accept("Cannot open the dropped file: " + Failures.reason(e));
+            error.accept("Cannot open the dropped file: " + ErrorTexts.reason(e));
             return false;
         }
     }

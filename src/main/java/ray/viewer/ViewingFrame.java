@@ -170,7 +170,7 @@ public final class ViewingFrame extends JFrame {
 
     private static HeadlessException noDisplay(Throwable e) {
         String why = e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
-        return new HeadlessException(Failures.oneLine("cannot open the display (" + why + ")"));
+        return new HeadlessException(ray.Failures.oneLine("cannot open the display (" + why + ")"));
     }
 
     /** Closes every viewer window; the process then ends. */
@@ -279,7 +279,7 @@ public final class ViewingFrame extends JFrame {
                 view.reference(img, png.getFileName().toString());
             } catch (java.io.IOException | RuntimeException e) {
                 view.reference(null, null);
-                showError("Cannot read the reference image " + png + ": " + Failures.reason(e));
+                showError("Cannot read the reference image " + png + ": " + ErrorTexts.reason(e));
             }
         }
         RenderJob job = session.current();

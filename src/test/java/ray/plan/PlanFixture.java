@@ -74,7 +74,7 @@ final class PlanFixture {
     }
 
     /** Every kind's count within the plan's bound, and 0 where the plan's bound is 0. */
-    static void assertWithinBound(RayStats stats, RayBound bound, String what) {
+    static void assertWithinBound(RayStats stats, RayCountBound bound, String what) {
         for (RayKind k : RayKind.values()) {
             long n = stats.get(k);
             assertTrue(n <= bound.get(k), what + ": " + n + " " + k.key() + " rays counted, bound " + bound.get(k));

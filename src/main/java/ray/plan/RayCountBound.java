@@ -4,7 +4,7 @@ import ray.RayKind;
 import ray.Scene;
 
 /**
- * Upper bounds on the rays one render can cast, by kind: camera, shadow, mirror, refraction, user
+ * Upper bounds on how many rays one render can cast, by kind: camera, shadow, mirror, refraction, user
  * (rays user classes trace through {@code Scene.trace}). {@link Double#POSITIVE_INFINITY} where a user
  * class may trace any number of rays.
  *
@@ -13,7 +13,7 @@ import ray.Scene;
  * r refraction rays; each hit on a material with a direct term casts at most S shadow rays, S the sum
  * of the evaluated lights' shadow rays per point.
  */
-public final class RayBound {
+public final class RayCountBound {
 
     private static final int CAMERA = RayKind.CAMERA.ordinal(), SHADOW = RayKind.SHADOW.ordinal(),
             MIRROR = RayKind.MIRROR.ordinal(), REFRACTION = RayKind.REFRACTION.ordinal(), USER = RayKind.USER.ordinal();
@@ -25,12 +25,12 @@ public final class RayBound {
     /** With faint paths cut: MaxDepth, of which only {@link #depth} bounces can be reached (-1: nothing cut). */
     int uncutDepth = -1;
 
-    private RayBound() {
+    private RayCountBound() {
     }
 
-    static RayBound of(RenderPlan plan) {
+    static RayCountBound of(RenderPlan plan) {
         Scene scene = plan.scene();
-        RayBound b = new RayBound();
+        RayCountBound b = new RayCountBound();
         int ns = plan.settings().samples();
         double n = (double) Math.max(0, scene.width) * Math.max(0, scene.height) * ns * ns;
         b.rays[CAMERA] = n;

@@ -4,10 +4,13 @@ import java.nio.file.AccessDeniedException;
 import java.nio.file.FileSystemException;
 import java.nio.file.NoSuchFileException;
 
-/** The viewer's error texts: whole, on one line each, naming what failed and never a temporary file. */
-final class Failures {
+/**
+ * The viewer's error texts for its status line and dialogs: whole, on one line each, naming what failed
+ * and never a temporary file. What a user's class threw is described by {@link ray.Failures}, as in every mode.
+ */
+final class ErrorTexts {
 
-    private Failures() {
+    private ErrorTexts() {
     }
 
     /**
@@ -30,7 +33,7 @@ final class Failures {
         if (m != null) {
             b.append(": ").append(m);
         }
-        return oneLine(b.toString());
+        return ray.Failures.oneLine(b.toString());
     }
 
     private static StackTraceElement firstOutsideJdk(Throwable e) {
@@ -52,9 +55,5 @@ final class Failures {
             return e.getClass().getSimpleName();
         }
         return e.getMessage() != null ? e.getMessage() : e.getClass().getSimpleName();
-    }
-
-    static String oneLine(String s) {
-        return s.replaceAll("[\\p{Cntrl}\u2028\u2029]+", " ");
     }
 }
