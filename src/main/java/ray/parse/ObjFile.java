@@ -176,51 +176,69 @@ public final class ObjFile {
         /**
          * Reads numbers as the scene parser does, before the library does it more loosely: plain decimals
          * in v, vn and vt (no hex {@code 0x1p0}, no {@code 1f}/{@code 1d} suffix, no NaN), whole-number
-         * indices in f that fit an int (99999999999 is not wrapped round to 1215752191).
+         * indices in f that fit an int (99999999999 is not wrapped round to 1215752191). The words are the
+         * line's runs of non-space characters up to a '#', after stripping (a scan of the characters: a
+         * regex compiled per line cost a million-line file seconds).
          */
         private void exact(String s) {
             int hash = s.indexOf('#');
-            String[] w = (hash < 0 ? s : s.substring(0, hash)).strip().split(" +");
-            if (w.length == 0) {
-                return;
-            }
-            switch (w[0]) {
-                case "v", "vn", "vt" -> {
-                    for (int i = 1; i < w.length; i++) {
-                        if (!Values.isDecimal(w[i])) {
-                            throw new Bad(line, "cannot read " + Values.quote(text.strip()) + " (" + expected(s) + ")");
-                        }
-                    }
-                }
-                case "f" -> {
-                    for (int i = 1; i < w.length; i++) {
-                        for (String part : w[i].split("/", -1)) {
-                            if (tooLarge(part)) {
-                                throw new Bad(line, Values.quote(text.strip()) + " has the index " + part
-                                        + ", beyond any file's vertices (expected indices from 1 to 2147483647, or negative ones counting back)");
-                            }
-                        }
-                    }
-                }
+            String t = (hash < 0 ? s : s.substring(0, hash)).strip();
+            int n = t.length(), end = t.indexOf(' ');
+            String key = end < 0 ? t : t.substring(0, end);
+            boolean decimals;
+            switch (key) {
+                case "v", "vn", "vt" -> decimals = true;
+                case "f" -> decimals = false;
                 default -> {
-                    // other statements are ignored
+                    return;     // other statements are ignored
                 }
+            }
+            for (int i = key.length(); i < n; ) {
+                if (t.charAt(i) == ' ') {
+                    i++;
+                    continue;
+                }
+                int j = t.indexOf(' ', i);
+                if (j < 0) {
+                    j = n;
+                }
+                if (decimals) {
+                    if (!Values.isDecimal(t.substring(i, j))) {
+                        throw new Bad(line, "cannot read " + Values.quote(text.strip()) + " (" + expected(s) + ")");
+                    }
+                } else {
+                    for (int p = i; p <= j; ) {     // the corner's parts, split at '/' (empty parts kept)
+                        int q = t.indexOf('/', p);
+                        if (q < 0 || q > j) {
+                            q = j;
+                        }
+                        if (tooLarge(t, p, q)) {
+                            String part = t.substring(p, q);
+                            throw new Bad(line, Values.quote(text.strip()) + " has the index " + part
+                                    + ", beyond any file's vertices (expected indices from 1 to 2147483647, or negative ones counting back)");
+                        }
+                        p = q + 1;
+                    }
+                }
+                i = j;
             }
         }
 
-        /** A whole number (digits, perhaps after '-') beyond an int: the library would wrap it round. */
-        private static boolean tooLarge(String t) {
-            int i = !t.isEmpty() && t.charAt(0) == '-' ? 1 : 0;
-            if (i == t.length()) {
+        /** {@code t[from, to)} is a whole number (digits, perhaps after '-') beyond an int: the library would wrap it round. */
+        private static boolean tooLarge(String t, int from, int to) {
+            int i = from < to && t.charAt(from) == '-' ? from + 1 : from;
+            if (i == to) {
                 return false;
             }
-            for (int k = i; k < t.length(); k++) {
+            for (int k = i; k < to; k++) {
                 if (t.charAt(k) < '0' || t.charAt(k) > '9') {
                     return false;       // not a number at all: the library's own message says so
                 }
             }
-            String digits = t.substring(i).replaceFirst("^0+(?=.)", "");
-            return digits.length() > 10 || Long.parseLong(digits) > Integer.MAX_VALUE;
+            while (i < to - 1 && t.charAt(i) == '0') {
+                i++;        // leading zeros (keeping one digit)
+            }
+            return to - i > 10 || Long.parseLong(t, i, to, 10) > Integer.MAX_VALUE;
         }
     }
 
@@ -350,19 +368,54 @@ public final class ObjFile {
          * those of an earlier face, so {@code f 1//1 2 3} would silently borrow normals.
          */
         private void checkCorners(int n, boolean normals, boolean texCoords) {
-            String s = reader.text.strip();
-            String[] corners = s.substring(1).strip().split("\\s+");
-            if (corners.length != n) {
+            String c = reader.text.strip();
+            c = c.substring(1).strip();
+            // the corners: runs of characters other than regex \s (scanned: no regex per face)
+            int count = c.isEmpty() ? 1 : 0;
+            for (int i = 0, len = c.length(); i < len; ) {
+                int j = cornerEnd(c, i);
+                count++;
+                i = skipSpace(c, j);
+            }
+            if (count != n) {
                 return;    // written with spaces around the slashes: the library's own reading stands
             }
-            for (String c : corners) {
-                int a = c.indexOf('/'), b = a < 0 ? -1 : c.indexOf('/', a + 1);
-                boolean hasT = a >= 0 && (b < 0 ? a + 1 < c.length() : b > a + 1);
-                boolean hasN = b >= 0 && b + 1 < c.length();
+            for (int i = 0, len = c.length(); i < len || (i == 0 && len == 0); ) {
+                int end = cornerEnd(c, i);
+                int a = c.indexOf('/', i);
+                a = a < end ? a : -1;
+                int b = a < 0 ? -1 : c.indexOf('/', a + 1);
+                b = b >= 0 && b < end ? b : -1;
+                boolean hasT = a >= 0 && (b < 0 ? a + 1 < end : b > a + 1);
+                boolean hasN = b >= 0 && b + 1 < end;
                 if (hasT != texCoords || hasN != normals) {
                     throw bad("writes its corners differently (expected every corner as v, v/vt, v//vn or v/vt/vn alike)");
                 }
+                if (len == 0) {
+                    break;
+                }
+                i = skipSpace(c, end);
             }
+        }
+
+        /** The end of the corner starting at {@code i}: the next regex {@code \s} character, or the end. */
+        private static int cornerEnd(String c, int i) {
+            while (i < c.length() && !space(c.charAt(i))) {
+                i++;
+            }
+            return i;
+        }
+
+        private static int skipSpace(String c, int i) {
+            while (i < c.length() && space(c.charAt(i))) {
+                i++;
+            }
+            return i;
+        }
+
+        /** Regex {@code \s}: space, tab, newline, vertical tab, form feed, carriage return. */
+        private static boolean space(char ch) {
+            return ch == ' ' || ch == '\t' || ch == '\n' || ch == '\u000B' || ch == '\f' || ch == '\r';
         }
 
         void finish() {
