@@ -48,6 +48,13 @@ public class Camera implements SceneObject {
 
     /** Computes u, v, w and the image-plane size from eye, target, up, yFOV and aspect. */
     public void recalculate() {
+        frame(u, v, w);
+        halfHeight = Math.tan(Math.toRadians(yFOV) / 2);
+        halfWidth = (Double.isNaN(aspect) ? 1 : aspect) * halfHeight;
+    }
+
+    /** The camera frame from eye, target and up into {@code u}, {@code v}, {@code w}. */
+    private void frame(Vector3d u, Vector3d v, Vector3d w) {
         double wx = eye.x - target.x, wy = eye.y - target.y, wz = eye.z - target.z;
         // lengths scaled by the largest component first: an eye at [1e308 1e308 1e308] is far, not "the same point"
         double wm = Math.max(Math.abs(wx), Math.max(Math.abs(wy), Math.abs(wz)));
@@ -74,8 +81,6 @@ public class Camera implements SceneObject {
         }
         u.set(ux / ul, uy / ul, uz / ul);
         v.cross(w, u);
-        halfHeight = Math.tan(Math.toRadians(yFOV) / 2);
-        halfWidth = (Double.isNaN(aspect) ? 1 : aspect) * halfHeight;
     }
 
     /**
@@ -112,6 +117,75 @@ public class Camera implements SceneObject {
         double dx = a * u.x + b * v.x - w.x, dy = a * u.y + b * v.y - w.y, dz = a * u.z + b * v.z - w.z;
         double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
         r.set(eye.x, eye.y, eye.z, dx / len, dy / len, dz / len, 0, Double.POSITIVE_INFINITY, 0);
+    }
+
+    /** True for a class that makes its camera rays its own way (overrides a ray method): nothing is projected for it. */
+    private static final ClassValue<Boolean> OWN_RAYS = Overrides.perClass(c -> c != Camera.class
+            && (Overrides.declarer(c, "setRay", Ray.class, double.class, double.class) != Camera.class
+            || Overrides.declarer(c, "setRayThrough", Ray.class, double.class, double.class, double.class, double.class) != Camera.class
+            || Overrides.declarer(c, "getRayThrough", double.class, double.class, double.class, double.class) != Camera.class
+            || Overrides.declarer(c, "planeX", double.class, double.class) != Camera.class
+            || Overrides.declarer(c, "planeY", double.class, double.class) != Camera.class
+            || Overrides.declarer(c, "recalculate") != Camera.class));
+
+    /**
+     * The pixels of a {@code width} x {@code height} image whose camera rays (any sample within the pixel)
+     * can meet the box [min, max]: {x0, y0, x1, y1}, x0 <= x < x1, y0 <= y < y1 (empty when x0 == x1),
+     * with a pixel's margin for rounding; the whole image where it cannot be narrowed (a corner of the box
+     * at or behind the eye's plane, an infinite box, or a subclass making its own rays). The
+     * render plan uses it to know which camera rays can see a surface.
+     */
+    public int[] pixelsSeeing(double minX, double minY, double minZ, double maxX, double maxY, double maxZ, int width, int height) {
+        int[] all = {0, 0, Math.max(0, width), Math.max(0, height)};
+        if (OWN_RAYS.get(getClass()) || width <= 0 || height <= 0) {
+            return all;
+        }
+        // the frame and image-plane size the render will use (prepareCamera: the aspect from the image
+        // size where the scene gave none), computed here, not read from a frame that may be stale
+        Vector3d u = new Vector3d(), v = new Vector3d(), w = new Vector3d();
+        try {
+            frame(u, v, w);
+        } catch (IllegalArgumentException e) {
+            return all;
+        }
+        double halfHeight = Math.tan(Math.toRadians(yFOV) / 2);
+        double halfWidth = (Double.isNaN(aspect) ? (double) width / height : aspect) * halfHeight;
+        if (!(halfWidth > 0 && halfHeight > 0) || !Double.isFinite(halfWidth) || !Double.isFinite(halfHeight)) {
+            return all;
+        }
+        double aMin = Double.POSITIVE_INFINITY, aMax = Double.NEGATIVE_INFINITY, bMin = aMin, bMax = aMax;
+        for (int i = 0; i < 8; i++) {
+            // a ray (a u + b v - w) t from the eye meets q = p - eye at t = -q.w, a = q.u / t, b = q.v / t;
+            // a box in front of the eye projects inside the hull of its corners' projections
+            double qx = ((i & 1) == 0 ? minX : maxX) - eye.x, qy = ((i & 2) == 0 ? minY : maxY) - eye.y,
+                    qz = ((i & 4) == 0 ? minZ : maxZ) - eye.z;
+            double t = -(qx * w.x + qy * w.y + qz * w.z);
+            if (!(t > 1e-9 * (Math.abs(qx) + Math.abs(qy) + Math.abs(qz))) || !Double.isFinite(t)) {
+                return all;
+            }
+            double a = (qx * u.x + qy * u.y + qz * u.z) / t, b = (qx * v.x + qy * v.y + qz * v.z) / t;
+            aMin = Math.min(aMin, a);
+            aMax = Math.max(aMax, a);
+            bMin = Math.min(bMin, b);
+            bMax = Math.max(bMax, b);
+        }
+        // planeX(x) = (2x / width - 1) halfWidth, planeY(y) = (1 - 2y / height) halfHeight: invert, one pixel of margin
+        double x0 = (aMin / halfWidth + 1) * width / 2, x1 = (aMax / halfWidth + 1) * width / 2;
+        double y0 = (1 - bMax / halfHeight) * height / 2, y1 = (1 - bMin / halfHeight) * height / 2;
+        if (!(Double.isFinite(x0) && Double.isFinite(x1) && Double.isFinite(y0) && Double.isFinite(y1))) {
+            return all;
+        }
+        int[] r = {clamp(Math.floor(x0) - 1, width), clamp(Math.floor(y0) - 1, height), clamp(Math.ceil(x1) + 1, width),
+                clamp(Math.ceil(y1) + 1, height)};
+        if (r[2] <= r[0] || r[3] <= r[1]) {
+            r[2] = r[0];
+            r[3] = r[1];
+        }
+        return r;
+    }
+
+    private static int clamp(double v, int n) {
+        return (int) Math.max(0, Math.min(Math.max(0, n), v));
     }
 
     @Override

@@ -35,7 +35,7 @@ public final class PlanReport {
     private final String sceneName;
     private final RenderPlan plan, without;
     private final List<Effect> effects = new ArrayList<>();
-    private final List<String> lightLines = new ArrayList<>(), saved = new ArrayList<>();
+    private final List<String> lightLines = new ArrayList<>(), saved = new ArrayList<>(), skipped = new ArrayList<>();
 
     public PlanReport(String sceneName, RenderPlan plan, RenderPlan without) {
         this.sceneName = sceneName;
@@ -95,44 +95,87 @@ public final class PlanReport {
                     : plan.unknownLights.contains(l) ? "a user's light: evaluated through its own code, rays unknown"
                     : l.plannedShadowRays() + " shadow ray" + (l.plannedShadowRays() == 1 ? "" : "s") + " per lit point"));
         }
-        savings(s, used);
+        savings(s);
     }
 
-    private void savings(Scene s, Map<Material, Shading> used) {
-        boolean anyLight = plan.lights().length > 0;
-        List<Material> pure = select(used, true, "pure"), flat = new ArrayList<>(), folded = new ArrayList<>();
-        for (Map.Entry<Material, Shading> e : used.entrySet()) {
-            Shading w = without.used.get(e.getKey());
-            if (!e.getValue().direct && w != null && w.direct && !e.getValue().pureMirror) {
-                flat.add(e.getKey());
+    /**
+     * What each exact skip saves here, measured on the bound: the plan derived once more without that one
+     * skip. A skip that changes the bound is a saving, with the difference; one that does work here but
+     * meets no worst path is listed as skipped, the bound the same either way.
+     */
+    private void savings(Scene s) {
+        for (Skip k : Skip.values()) {
+            if (!plan.skipping(k)) {
+                continue;
             }
-            if (e.getValue().folded > 1 && plan.skipping(Skip.FOLD_GLAZED)) {
-                folded.add(e.getKey());
-                saved.add("nested Glazed chain folded at " + label(e.getKey()) + " (" + e.getValue().folded
-                        + " levels): one mirror ray per hit instead of " + w.mirror);
+            java.util.EnumSet<Skip> others = java.util.EnumSet.copyOf(plan.skips());
+            others.remove(k);
+            RenderPlan less = RenderPlan.derive(s, plan.settings(), others);
+            String what = what(k, less);
+            if (what == null) {
+                continue;
+            }
+            RayCountBound with = plan.bound(), without = less.bound();
+            double fewer = without.total() - with.total();
+            if (fewer > 0 || !Double.isFinite(without.total())) {
+                List<String> kinds = new ArrayList<>();
+                for (RayKind kind : RayKind.values()) {
+                    double d = without.get(kind) - with.get(kind);
+                    if (d > 0) {
+                        kinds.add(kind.key() + " " + count(d));
+                    }
+                }
+                saved.add(what + "; bound " + count(fewer) + " rays lower (" + String.join(", ", kinds) + ")");
+            } else {
+                skipped.add(what + " (the bound is the same without it: its worst path does not meet it)");
             }
         }
-        if (anyLight && !pure.isEmpty()) {
-            saved.add("no shadow rays at the " + plural(pure.size(), "pure mirror") + " (" + names(pure)
-                    + "): only the mirror term, no direct light");
-        }
-        if (anyLight && !flat.isEmpty()) {
-            saved.add("no light evaluation and no shadow rays at " + names(flat) + ": k_d = k_s = 0, no direct term");
-        }
-        for (Light l : plan.dark) {
-            saved.add(label(l) + " has zero intensity: skipped");
-        }
-        if (select(used, true, "mirror").isEmpty()) {
-            saved.add("no mirror rays: no material reflects");
-        }
-        for (Map.Entry<Material, Shading> e : without.used.entrySet()) {
-            Shading p = used.get(e.getKey());
-            if (e.getValue().mirror > p.mirror && !folded.contains(e.getKey())) {
-                saved.add("no mirror rays at " + label(e.getKey()) + ": k_m = 0");
+    }
+
+    /** What skip {@code k} leaves out in this scene (the plan {@code less} derived without it), or null: nothing. */
+    private String what(Skip k, RenderPlan less) {
+        List<Material> ms = new ArrayList<>();
+        switch (k) {
+            case DARK_LIGHTS -> {
+                if (plan.dark.isEmpty()) {
+                    return null;
+                }
+                List<String> names = new ArrayList<>();
+                for (Light l : plan.dark) {
+                    names.add(label(l));
+                }
+                return String.join(", ", names) + (names.size() == 1 ? " has" : " have") + " zero intensity: skipped";
             }
-        }
-        if (zero(s.ambientLight)) {
-            saved.add("no ambient term: I_a = 0");
+            case NO_DIRECT_TERM -> {
+                for (Map.Entry<Material, Shading> e : plan.used.entrySet()) {
+                    Shading w = less.used.get(e.getKey());
+                    if (!e.getValue().direct && w != null && w.direct) {
+                        ms.add(e.getKey());
+                    }
+                }
+                return ms.isEmpty() ? null : "no light evaluation and no shadow rays at " + names(ms) + ": k_d = k_s = 0, no direct term";
+            }
+            case ZERO_MIRROR -> {
+                for (Map.Entry<Material, Shading> e : plan.used.entrySet()) {
+                    Shading w = less.used.get(e.getKey());
+                    if (w != null && w.mirror > e.getValue().mirror) {
+                        ms.add(e.getKey());
+                    }
+                }
+                return ms.isEmpty() ? null : "no mirror rays at " + names(ms) + ": k_m = 0";
+            }
+            case FOLD_GLAZED -> {
+                List<String> lines = new ArrayList<>();
+                for (Map.Entry<Material, Shading> e : plan.used.entrySet()) {
+                    Shading w = less.used.get(e.getKey());
+                    if (e.getValue().folded > 1 && w != null && w.mirror > e.getValue().mirror) {
+                        lines.add(label(e.getKey()) + " (" + e.getValue().folded + " levels): " + e.getValue().mirror + " mirror ray"
+                                + (e.getValue().mirror == 1 ? "" : "s") + " per hit instead of " + w.mirror);
+                    }
+                }
+                return lines.isEmpty() ? null : "nested Glazed chain" + (lines.size() == 1 ? "" : "s") + " folded at " + String.join(", ", lines);
+            }
+            default -> throw new IllegalArgumentException(k.name());
         }
     }
 
@@ -148,7 +191,6 @@ public final class PlanReport {
                 case "mirror" -> s.mirror > 0;
                 case "refraction" -> s.refraction > 0;
                 case "unknown" -> s.unknown;
-                case "pure" -> s.pureMirror && !s.direct;
                 default -> throw new IllegalArgumentException(what);
             };
             if (has == on) {
@@ -202,8 +244,14 @@ public final class PlanReport {
         return effects;
     }
 
+    /** The exact skips that lower the bound here, each with how much. */
     public List<String> saved() {
         return saved;
+    }
+
+    /** The exact skips that do work here without lowering the bound (no worst path meets them). */
+    public List<String> skipped() {
+        return skipped;
     }
 
     /** The plan for a person: one line per effect, the lights, what was saved, the bounds. */
@@ -221,13 +269,17 @@ public final class PlanReport {
         for (String w : saved) {
             out.add("  saved: " + w);
         }
+        for (String w : skipped) {
+            out.add("  skipped: " + w);
+        }
         out.add("  bound: " + bounds(plan.bound()));
         out.add("  without the plan's skips: " + bounds(without.bound()));
         return out;
     }
 
+    /** "1,234 rays (camera ..., shadow ...)", or "... rays in all (by kind: ...)" where the kinds' worst paths differ. */
     private static String bounds(RayCountBound b) {
-        StringBuilder t = new StringBuilder(count(b.total()) + " rays (");
+        StringBuilder t = new StringBuilder(count(b.total()) + (b.total() < b.sumOfKinds() ? " rays in all (by kind: " : " rays ("));
         for (RayKind k : RayKind.values()) {
             t.append(k.ordinal() == 0 ? "" : ", ").append(k.key()).append(' ').append(count(b.get(k)));
         }
@@ -255,7 +307,7 @@ public final class PlanReport {
         bound(j.open("bound"), plan.bound()).close();
         bound(j.open("boundWithoutPlan"), without.bound()).close();
         j.put("totalBound", plan.bound().total()).put("totalBoundWithoutPlan", without.bound().total());
-        j.put("cutFaint", plan.cutsFaintPaths()).put("lights", lightLines).put("saved", saved);
+        j.put("cutFaint", plan.cutsFaintPaths()).put("lights", lightLines).put("saved", saved).put("skipped", skipped);
         return j.toString();
     }
 

@@ -1,24 +1,50 @@
 package ray.plan;
 
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
 import ray.RayKind;
 import ray.Scene;
+import ray.material.Material;
+import ray.surface.Surface;
 
 /**
  * Upper bounds on how many rays one render can cast, by kind: camera, shadow, mirror, refraction, user
  * (rays user classes trace through {@code Scene.trace}). {@link Double#POSITIVE_INFINITY} where a user
  * class may trace any number of rays.
  *
- * <p>With N camera rays, MaxDepth D and b the most secondary rays one hit casts, at most N b^d rays
- * reach depth d, so hits &lt;= N (1 + b + ... + b^D); each hit at depth &lt; D casts at most m mirror and
- * r refraction rays; each hit on a material with a direct term casts at most S shadow rays, S the sum
- * of the evaluated lights' shadow rays per point.
+ * <p>The bound follows the tree of rays one camera ray can grow, material by material: a ray of depth d
+ * hits nothing or one surface, and a hit on material M casts M's shadow rays (S_M, the evaluated lights'
+ * shadow rays per lit point, where M has a direct term), and, below MaxDepth D, M's mirror and refraction
+ * rays (b_M of them, as M declares: a Glazed chain one or one per level, a Dielectric two), each of depth
+ * d + 1. So the most rays of a kind under a ray of depth d is
+ * <pre>
+ *   C(d) = max(0, max over M of [own_M(d) + b_M C(d + 1)]),  C(D + 1) = 0
+ * </pre>
+ * and the bound is N C(0) for N camera rays: the worst path through the materials the scene has, not the
+ * widest branching times the most shadow rays of any material at every level (a pure mirror casts no
+ * shadow ray, a Diffuse surface ends its path). The total is bounded the same way (one tree, every kind),
+ * which can be below the sum of the kinds' own bounds (their worst paths differ).
+ *
+ * <p>With faint paths cut ({@code --cut-faint}) a ray carries its path's weight w (the product of the
+ * mirror weights along it), and a material whose secondary rays are weighted by k (a Glazed chain over a
+ * base that casts nothing: the sum of its |k_m|) casts them only where w k is at least {@link RenderPlan#FAINT};
+ * below any other material (glass, user code) the weight is no longer followed (nothing is assumed cut).
  */
 public final class RayCountBound {
 
     private static final int CAMERA = RayKind.CAMERA.ordinal(), SHADOW = RayKind.SHADOW.ordinal(),
             MIRROR = RayKind.MIRROR.ordinal(), REFRACTION = RayKind.REFRACTION.ordinal(), USER = RayKind.USER.ordinal();
+    /** Slots of a subtree's counts: shadow, mirror, refraction, all of them. */
+    private static final int S = 0, M = 1, R = 2, ALL = 3, SLOTS = 4;
+    /** Past this many (depth, weight) states, deeper weights are no longer followed (nothing assumed cut): bounded work. */
+    private static final int MAX_STATES = 100_000;
 
     private final double[] rays = new double[RayKind.values().length];
+    private double total;
     /** What the bound was computed from: camera rays, most secondary rays per hit, shadow rays per lit point, MaxDepth. */
     double cameraRays, perPoint;
     int branch, depth, ns;
@@ -28,70 +54,330 @@ public final class RayCountBound {
     private RayCountBound() {
     }
 
+    /** One way a hit can shade, as far as the bound is concerned (materials alike in these merged). */
+    private record Node(double shadow, int mirror, int refraction, double weight) {
+        int children() {
+            return mirror + refraction;
+        }
+    }
+
     static RayCountBound of(RenderPlan plan) {
         Scene scene = plan.scene();
         RayCountBound b = new RayCountBound();
         int ns = plan.settings().samples();
         double n = (double) Math.max(0, scene.width) * Math.max(0, scene.height) * ns * ns;
         b.rays[CAMERA] = n;
-        int mirror = 0, refraction = 0, branch = 0;
-        boolean direct = false, unknown = false;
-        for (Shading s : plan.used.values()) {
-            mirror = Math.max(mirror, s.mirror);
-            refraction = Math.max(refraction, s.refraction);
-            branch = Math.max(branch, s.mirror + s.refraction);
-            direct |= s.direct;
-            unknown |= s.unknown;
-        }
         double perPoint = 0;
         for (ray.light.Light l : plan.lights()) {
             perPoint += plan.unknownLights.contains(l) ? Double.POSITIVE_INFINITY : l.plannedShadowRays();
         }
-        int depth = Math.max(0, plan.settings().maxDepth());
-        if (plan.cutsFaintPaths()) {
-            b.uncutDepth = depth;
-            depth = cutDepth(plan, depth);
+        boolean direct = false, unknown = false, mirrors = false, refracts = false;
+        int branch = 0;
+        Map<Material, Node> nodeOf = new HashMap<>();
+        Set<Node> nodes = new LinkedHashSet<>();
+        for (Map.Entry<Material, Shading> e : plan.used.entrySet()) {
+            Shading s = e.getValue();
+            direct |= s.direct;
+            unknown |= s.unknown;
+            mirrors |= s.mirror > 0;
+            refracts |= s.refraction > 0;
+            branch = Math.max(branch, s.mirror + s.refraction);
+            Node node = new Node(s.direct ? perPoint : 0, s.mirror, s.refraction, s.weight);
+            nodes.add(node);
+            nodeOf.put(e.getKey(), node);
         }
+        int depth = Math.max(0, plan.settings().maxDepth());
         b.cameraRays = n;
         b.ns = ns;
         b.perPoint = perPoint;
         b.branch = branch;
         b.depth = depth;
+        b.rays[USER] = unknown || direct && !plan.unknownLights.isEmpty() ? Double.POSITIVE_INFINITY : 0;
+        if (unknown) {   // a user's material: any number of rays of its own, each shading anything
+            b.rays[SHADOW] = direct && perPoint > 0 ? Double.POSITIVE_INFINITY : 0;
+            b.rays[MIRROR] = mirrors ? Double.POSITIVE_INFINITY : 0;
+            b.rays[REFRACTION] = refracts ? Double.POSITIVE_INFINITY : 0;
+            b.total = Double.POSITIVE_INFINITY;
+            return b;
+        }
+        Tree tree = new Tree(new ArrayList<>(nodes), depth, plan.cutsFaintPaths());
+        // per camera ray: the worst subtree of a material its pixel can see (a surface's box projected
+        // into the image), summed over the pixels; n x that of the worst material where nothing is narrowed
+        double[] c = Screen.perCameraRay(scene, nodeOf, tree, ns);
         // a known bound that overflows a double (glass at MaxDepth 1000: 2^1000 paths) stays finite, the
         // largest double, so that it is refused as astronomical and never read as "unknown" (infinite)
-        double hits = finite(n * geometric(branch, depth)), parents = finite(n * geometric(branch, depth - 1));
-        if (unknown) {   // a user's material: any number of rays of its own, each shading anything
-            hits = parents = Double.POSITIVE_INFINITY;
+        if (n == 0) {
+            c = new double[SLOTS];   // no pixel, no ray (and no 0 x infinity)
         }
-        b.rays[MIRROR] = mirror == 0 ? 0 : parents * mirror;
-        b.rays[REFRACTION] = refraction == 0 ? 0 : parents * refraction;
-        b.rays[SHADOW] = direct && perPoint > 0 ? hits * perPoint : 0;
-        if (!unknown) {
-            b.rays[MIRROR] = finite(b.rays[MIRROR]);
-            b.rays[REFRACTION] = finite(b.rays[REFRACTION]);
-            b.rays[SHADOW] = Double.isFinite(perPoint) ? finite(b.rays[SHADOW]) : b.rays[SHADOW];
+        b.rays[SHADOW] = Double.isFinite(perPoint) ? finite(c[S]) : c[S] > 0 ? Double.POSITIVE_INFINITY : 0;
+        b.rays[MIRROR] = finite(c[M]);
+        b.rays[REFRACTION] = finite(c[R]);
+        double sum = 0;
+        for (double r : b.rays) {
+            sum += r;
         }
-        b.rays[USER] = unknown || direct && !plan.unknownLights.isEmpty() ? Double.POSITIVE_INFINITY : 0;
+        b.total = Double.isFinite(perPoint) ? finite(Math.min(sum, n + c[ALL])) : b.rays[USER] + sum;
+        if (plan.cutsFaintPaths()) {
+            b.uncutDepth = depth;
+            b.depth = tree.deepest;
+        }
         return b;
     }
 
     /**
-     * The deepest mirror ray a render cutting faint paths can cast: a ray of depth d carries a weight
-     * of at most k^d (k the largest weight one hit gives), and none is cast below {@link RenderPlan#FAINT}.
+     * The worst subtree under a ray, by depth (and path weight, with faint paths cut), memoised: a few
+     * distinct kinds of hit, so the work is depth x kinds (x the weights a path can reach).
      */
-    static int cutDepth(RenderPlan plan, int depth) {
-        double k = 0;
-        for (Shading s : plan.used.values()) {
-            k = Math.max(k, s.weight);
+    private static final class Tree {
+        private final List<Node> nodes;
+        private final int maxDepth;
+        private final boolean cut;
+        private final Map<State, double[]> memo = new HashMap<>();
+        /** The deepest secondary ray any path casts (0: none). */
+        int deepest;
+
+        Tree(List<Node> nodes, int maxDepth, boolean cut) {
+            this.nodes = nodes;
+            this.maxDepth = maxDepth;
+            this.cut = cut;
         }
-        if (!(k < 1)) {
-            return depth;   // refraction, user code or a coefficient >= 1: nothing provably faint
+
+        /**
+         * The most rays of each kind a ray of depth {@code d} can lead to (its own hit's shadow rays and
+         * secondary rays, and theirs), with path weight {@code w} (infinity: not followed).
+         */
+        /** What a hit on {@code m} by a ray of depth {@code d} and weight {@code w} leads to. */
+        double[] cost(Node m, int d, double w) {
+            double[] c = new double[SLOTS];
+            c[S] = m.shadow;
+            c[ALL] = m.shadow;
+            if (d < maxDepth && m.children() > 0) {
+                if (!cut || w == Double.POSITIVE_INFINITY) {
+                    deepest = Math.max(deepest, d + 1);
+                    add(c, m, unweighted(d + 1));
+                    return c;
+                }
+                double cw = Double.isFinite(m.weight) ? w * m.weight : Double.POSITIVE_INFINITY;
+                if (!(cw < RenderPlan.FAINT)) {
+                    deepest = Math.max(deepest, d + 1);
+                    add(c, m, cost(d + 1, cw));
+                }
+            }
+            return c;
         }
-        int d = 0;
-        for (double w = 1; d < depth && w * k >= RenderPlan.FAINT; d++) {
-            w *= k;
+
+        double[] cost(int d, double w) {
+            if (!cut || w == Double.POSITIVE_INFINITY) {
+                return unweighted(d);
+            }
+            State key = new State(d, w);
+            double[] known = memo.get(key);
+            if (known != null) {
+                return known;
+            }
+            if (memo.size() > MAX_STATES || d > 4096) {   // bounded work (and stack): stop following the weight
+                return unweighted(d);
+            }
+            double[] out = new double[SLOTS];
+            for (Node m : nodes) {
+                max(out, cost(m, d, w));
+            }
+            memo.put(key, out);
+            return out;
         }
-        return d;
+
+        private record State(int depth, double weight) {
+        }
+
+        /** Without weights: one array per depth, filled from MaxDepth up (no recursion). */
+        private double[][] byDepth;
+
+        private double[] unweighted(int d) {
+            if (byDepth == null) {
+                byDepth = new double[maxDepth + 2][];
+                byDepth[maxDepth + 1] = new double[SLOTS];
+                for (int k = maxDepth; k >= 0; k--) {
+                    double[] out = new double[SLOTS];
+                    for (Node m : nodes) {
+                        double[] c = new double[SLOTS];
+                        c[S] = m.shadow;
+                        c[ALL] = m.shadow;
+                        if (k < maxDepth && m.children() > 0) {
+                            add(c, m, byDepth[k + 1]);
+                        }
+                        max(out, c);
+                    }
+                    byDepth[k] = out;
+                }
+            }
+            for (Node m : nodes) {   // nothing cut below here: a chain can go on to MaxDepth
+                if (m.children() > 0 && d < maxDepth) {
+                    deepest = maxDepth;
+                }
+            }
+            return byDepth[d];
+        }
+
+        /** {@code c} += what {@code m}'s secondary rays cast: themselves and the worst subtree under each. */
+        private static void add(double[] c, Node m, double[] child) {
+            int b = m.children();
+            c[S] += b * child[S];
+            c[M] += m.mirror + b * child[M];
+            c[R] += m.refraction + b * child[R];
+            c[ALL] += b * (1 + child[ALL]);
+        }
+
+        static void max(double[] out, double[] c) {
+            for (int i = 0; i < SLOTS; i++) {
+                out[i] = Math.max(out[i], c[i]);
+            }
+        }
+    }
+
+    /**
+     * What a camera ray can hit: a surface with finite bounds only from the pixels its box projects to
+     * ({@link ray.Camera#pixelsSeeing}); so a camera ray is charged the worst subtree of the materials its
+     * pixel can see (nothing for the background), not of every material in the scene.
+     */
+    private static final class Screen {
+        /** Past this many rectangles of one material, its rectangles are merged into their bounding one. */
+        private static final int MAX_RECTS = 256;
+        /** Past this much filling (pixels x rectangles), every material is one rectangle: bounded work. */
+        private static final long MAX_WORK = 4_000_000L;
+
+        private Screen() {
+        }
+
+        /** The rays of each kind (slots) under all camera rays together, divided by nothing: totals. */
+        static double[] perCameraRay(Scene scene, Map<Material, Node> nodeOf, Tree tree, int ns) {
+            int w = Math.max(0, scene.width), h = Math.max(0, scene.height);
+            List<Node> order = new ArrayList<>();
+            Map<Node, List<int[]>> rects = new java.util.LinkedHashMap<>();
+            for (Surface s : scene.surfaces) {
+                Set<Material> ms = new LinkedHashSet<>();
+                materials(s, ms);
+                int[] r = null;
+                for (Material m : ms) {
+                    Node node = nodeOf.get(m);
+                    if (node == null) {
+                        continue;
+                    }
+                    if (r == null) {
+                        r = rect(scene, s, w, h);
+                    }
+                    rects.computeIfAbsent(node, k -> {
+                        order.add(k);
+                        return new ArrayList<>();
+                    }).add(r);
+                }
+            }
+            double[][] cost = new double[order.size()][];
+            for (int i = 0; i < order.size(); i++) {
+                cost[i] = tree.cost(order.get(i), 0, 1);
+                if (cost[i][ALL] == 0) {
+                    rects.get(order.get(i)).clear();   // a hit that casts nothing adds nothing anywhere
+                }
+            }
+            long work = 0;
+            for (List<int[]> l : rects.values()) {
+                if (l.size() > MAX_RECTS) {
+                    int[] u = union(l);
+                    l.clear();
+                    l.add(u);
+                }
+                for (int[] r : l) {
+                    work += (long) (r[2] - r[0]) * (r[3] - r[1]);
+                }
+            }
+            if (work > MAX_WORK) {
+                for (List<int[]> l : rects.values()) {
+                    int[] u = union(l);
+                    l.clear();
+                    l.add(u);
+                }
+            }
+            // row by row: each pixel's worst over the rectangles covering it, summed
+            List<List<int[]>> starting = new ArrayList<>();
+            for (int y = 0; y <= h; y++) {
+                starting.add(new ArrayList<>());
+            }
+            for (int i = 0; i < order.size(); i++) {
+                for (int[] r : rects.get(order.get(i))) {
+                    if (r[2] > r[0] && r[3] > r[1]) {
+                        starting.get(r[1]).add(new int[] {r[0], r[1], r[2], r[3], i});
+                    }
+                }
+            }
+            double[] total = new double[SLOTS];
+            double[] row = new double[w * SLOTS];
+            List<int[]> active = new ArrayList<>();
+            for (int y = 0; y < h; y++) {
+                active.addAll(starting.get(y));
+                final int yy = y;
+                active.removeIf(r -> r[3] <= yy);
+                if (active.isEmpty()) {
+                    continue;
+                }
+                int from = w, to = 0;
+                for (int[] r : active) {
+                    from = Math.min(from, r[0]);
+                    to = Math.max(to, r[2]);
+                }
+                java.util.Arrays.fill(row, from * SLOTS, to * SLOTS, 0);
+                for (int[] r : active) {
+                    double[] c = cost[r[4]];
+                    for (int x = r[0]; x < r[2]; x++) {
+                        for (int k = 0; k < SLOTS; k++) {
+                            row[x * SLOTS + k] = Math.max(row[x * SLOTS + k], c[k]);
+                        }
+                    }
+                }
+                for (int x = from; x < to; x++) {
+                    for (int k = 0; k < SLOTS; k++) {
+                        total[k] += row[x * SLOTS + k];
+                    }
+                }
+            }
+            for (int k = 0; k < SLOTS; k++) {
+                total[k] *= (double) ns * ns;
+            }
+            return total;
+        }
+
+        /** The pixels whose camera rays can meet {@code s} (its box projected; the whole image when unbounded). */
+        private static int[] rect(Scene scene, Surface s, int w, int h) {
+            ray.accel.Aabb b = s.bounds();
+            if (scene.camera == null || !b.isFinite()) {
+                return new int[] {0, 0, w, h};
+            }
+            return scene.camera.pixelsSeeing(b.minX, b.minY, b.minZ, b.maxX, b.maxY, b.maxZ, w, h);
+        }
+
+        private static int[] union(List<int[]> l) {
+            if (l.isEmpty()) {
+                return new int[4];
+            }
+            int[] u = {Integer.MAX_VALUE, Integer.MAX_VALUE, Integer.MIN_VALUE, Integer.MIN_VALUE};
+            for (int[] r : l) {
+                if (r[2] > r[0] && r[3] > r[1]) {
+                    u[0] = Math.min(u[0], r[0]);
+                    u[1] = Math.min(u[1], r[1]);
+                    u[2] = Math.max(u[2], r[2]);
+                    u[3] = Math.max(u[3], r[3]);
+                }
+            }
+            return u[0] > u[2] ? new int[4] : u;
+        }
+
+        /** The materials a hit on {@code s} can shade with: its own and its operands' (a CSG's), all the way down. */
+        private static void materials(Surface s, Set<Material> out) {
+            if (s.material != null) {
+                out.add(s.material);
+            }
+            for (Surface o : s.operands()) {
+                materials(o, out);
+            }
+        }
     }
 
     /** With faint paths cut, the bounces that can still be reached; MaxDepth otherwise. */
@@ -124,36 +410,35 @@ public final class RayCountBound {
         return s;
     }
 
-    /** 1 + b + ... + b^k (0 for k &lt; 0). */
-    static double geometric(int b, int k) {
-        if (k < 0) {
-            return 0;
-        }
-        if (b == 1) {
-            return k + 1;
-        }
-        double sum = 0, term = 1;
-        for (int d = 0; d <= k && sum < Double.MAX_VALUE; d++) {
-            sum += term;
-            term *= b;
-        }
-        return sum;
-    }
-
     /** The bound for rays of kind {@code k}, infinite where unknown. */
     public double get(RayKind k) {
         return rays[k.ordinal()];
     }
 
-    /** All kinds together (infinite where any is unknown). */
+    /**
+     * All kinds together (infinite where any is unknown): the tree's bound on every ray, at most the sum
+     * of the kinds' bounds.
+     */
     public double total() {
+        return total;
+    }
+
+    /** The sum of the kinds' own bounds (at least {@link #total()}). */
+    public double sumOfKinds() {
         double t = 0;
-        boolean unknown = false;
         for (double r : rays) {
             t += r;
-            unknown |= r == Double.POSITIVE_INFINITY;
         }
-        return unknown ? t : finite(t);
+        return Double.isFinite(t) || hasUnknown() ? t : Double.MAX_VALUE;
+    }
+
+    private boolean hasUnknown() {
+        for (double r : rays) {
+            if (r == Double.POSITIVE_INFINITY) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** {@code v}, or the largest double where a finite bound overflowed. */

@@ -20,8 +20,6 @@ final class Shading {
     final boolean direct;
     /** Runs a user's code the plan knows nothing about (may trace any rays). */
     final boolean unknown;
-    /** Only the mirror term: no direct light, no refraction, nothing of its own. */
-    final boolean pureMirror;
     /** Levels of a chain folded into one mirror ray (1 where nothing was folded). */
     final int folded;
     /**
@@ -36,7 +34,6 @@ final class Shading {
         this.refraction = c.refractionRays();
         this.direct = c.evaluatesLights();
         this.unknown = c.unknown();
-        this.pureMirror = c.terms().equals(EnumSet.of(Term.MIRROR)) && !c.evaluatesLights();
         this.folded = c.foldedLevels();
         this.weight = c.weight();
     }
