@@ -346,8 +346,8 @@ public final class RayCountBound {
 
         /** The pixels whose camera rays can meet {@code s} (its box projected; the whole image when unbounded). */
         private static int[] rect(Scene scene, Surface s, int w, int h) {
-            ray.accel.Aabb b = s.bounds();
-            if (scene.camera == null || !b.isFinite()) {
+            ray.accel.Aabb b = s.bounds();   // a user's surface may have none (null): the render names that, not the plan
+            if (scene.camera == null || b == null || !b.isFinite()) {
                 return new int[] {0, 0, w, h};
             }
             return scene.camera.pixelsSeeing(b.minX, b.minY, b.minZ, b.maxX, b.maxY, b.maxZ, w, h);
