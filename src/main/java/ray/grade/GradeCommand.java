@@ -6,9 +6,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.HashSet;
 import java.util.List;
-import java.util.Set;
 import java.util.concurrent.Callable;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -149,22 +147,10 @@ public final class GradeCommand implements Callable<Integer> {
 
     private int gradeAll(Grader grader, PrintStream out, PrintStream err) throws IOException {
         long t0 = System.nanoTime();
-        List<Submission> subs = new ArrayList<>();
-        int unreadable = 0;
-        Set<String> names = new HashSet<>();
-        for (Path p : submissions) {
-            try {
-                Submission s = Submission.read(p);
-                String name = s.name();
-                for (int k = 2; !names.add(name); k++) {
-                    name = s.name() + "-" + k;     // two hand-ins of the same name (a/x.zip, b/x.zip): keep both
-                }
-                subs.add(name.equals(s.name()) ? s : new Submission(name, s.files(), s.notes()));
-            } catch (IOException e) {
-                err.println("raytracer grade: " + e.getMessage());
-                unreadable++;
-            }
-        }
+        List<String> problems = new ArrayList<>();
+        List<Submission> subs = Submission.readAll(submissions, problems);
+        problems.forEach(p -> err.println("raytracer grade: " + p));
+        int unreadable = problems.size();
         int n = Math.min(jobs, Math.max(1, subs.size()));
         ExecutorService pool = Executors.newFixedThreadPool(n);
         List<Future<SubmissionResult>> futures = new ArrayList<>();
@@ -181,8 +167,7 @@ public final class GradeCommand implements Callable<Integer> {
             try {
                 SubmissionResult r = futures.get(i).get();
                 results.add(r);
-                out.println(r.name() + ": " + Reports.num(r.score()) + " / " + Reports.num(r.maxScore()) + " ("
-                        + Reports.num(Grader.round(r.seconds())) + " s)");
+                out.println(Reports.scoreLine(r));
             } catch (java.util.concurrent.ExecutionException e) {
                 Throwable c = e.getCause();
                 err.println("raytracer grade: " + subs.get(i).name() + ": the grader failed: " + c);
@@ -193,11 +178,7 @@ public final class GradeCommand implements Callable<Integer> {
             }
         }
         double wall = (System.nanoTime() - t0) / 1e9;
-        Files.writeString(output.resolve("grades.csv"), Reports.gradesCsv(results, grader.testSet()), StandardCharsets.UTF_8);
-        Files.writeString(output.resolve("index.html"), Reports.classHtml(results, grader.testSet(), grader.sandbox().description(), wall, n),
-                StandardCharsets.UTF_8);
-        out.println(results.size() + " graded in " + Reports.num(Grader.round(wall)) + " s (" + n + " at a time; "
-                + grader.sandbox().description() + "): " + output.resolve("index.html"));
+        out.println(Reports.writeClass(output, results, grader.testSet(), grader.sandbox().description(), wall, n));
         return unreadable == 0 ? 0 : 1;
     }
 
@@ -206,7 +187,7 @@ public final class GradeCommand implements Callable<Integer> {
      * {@code <app home>/course/grading} of the installed launcher, else {@code build/course-kit/grading}
      * (a build from the project's folder).
      */
-    static Path defaultTests() throws IOException {
+    public static Path defaultTests() throws IOException {
         String prop = System.getProperty("raytracer.course");
         if (prop != null) {
             return Path.of(prop).resolve("grading");

@@ -295,6 +295,23 @@ public final class Reports {
         return b.toString();
     }
 
+    /** A submission's line on the console: {@code name: 87.5 / 100 (16.2 s)}. */
+    public static String scoreLine(SubmissionResult r) {
+        return r.name() + ": " + num(r.score()) + " / " + num(r.maxScore()) + " (" + num(Grader.round(r.seconds())) + " s)";
+    }
+
+    /**
+     * Writes the class's grades.csv and index.html into {@code dir} and returns the closing console line
+     * ({@code parallel}: submissions graded at once).
+     */
+    public static String writeClass(Path dir, List<SubmissionResult> results, TestSet set, String sandbox, double wallSeconds,
+                                    int parallel) throws IOException {
+        Files.writeString(dir.resolve("grades.csv"), gradesCsv(results, set), StandardCharsets.UTF_8);
+        Files.writeString(dir.resolve("index.html"), classHtml(results, set, sandbox, wallSeconds, parallel), StandardCharsets.UTF_8);
+        return results.size() + " graded in " + num(Grader.round(wallSeconds)) + " s (" + parallel + " at a time; " + sandbox + "): "
+                + dir.resolve("index.html");
+    }
+
     /** Writes results.json and index.html for one submission into {@code dir}. */
     public static void writeSubmission(SubmissionResult r, Path dir) throws IOException {
         Files.createDirectories(dir);

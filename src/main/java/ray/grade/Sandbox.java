@@ -55,6 +55,7 @@ public final class Sandbox {
      * IOException saying why not; {@code none}: the fallback.
      */
     public static Sandbox choose(String mode) throws IOException {
+        checkMode(mode);
         boolean prlimit = works(List.of("prlimit", "--cpu=10", "true"));
         switch (mode) {
             case "none" -> {
@@ -71,7 +72,14 @@ public final class Sandbox {
                 return new Sandbox(Kind.NONE, "NO SANDBOX: " + problem + "; student code ran as a plain child "
                         + "process (time, CPU, memory and output limits only)", prlimit);
             }
-            default -> throw new IOException("--sandbox " + mode + ": expected auto, bwrap or none");
+            default -> throw new IllegalStateException(mode);
+        }
+    }
+
+    /** An IOException naming {@code --sandbox MODE} unless the mode is auto, bwrap or none (checked without probing anything). */
+    public static void checkMode(String mode) throws IOException {
+        if (!List.of("auto", "bwrap", "none").contains(mode)) {
+            throw new IOException("--sandbox " + mode + ": expected auto, bwrap or none");
         }
     }
 

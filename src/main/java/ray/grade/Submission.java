@@ -22,7 +22,7 @@ import java.util.zip.ZipInputStream;
  * @param files  file name (e.g. {@code Sphere.java}) to its bytes
  * @param notes  what was left out of the hand-in and why (other files, duplicates, oversize)
  */
-public record Submission(String name, Map<String, byte[]> files, List<String> notes) {
+public record Submission(String name, Map<String, byte[]> files, List<String> notes) implements java.io.Serializable {
 
     /** Largest hand-in read (all .java files together): a course assignment is tens of kilobytes. */
     public static final long MAX_TOTAL_BYTES = 4L << 20;
@@ -43,6 +43,28 @@ public record Submission(String name, Map<String, byte[]> files, List<String> no
             return readZip(path);
         }
         throw new IOException(path + ": not a folder or a .zip of .java files");
+    }
+
+    /**
+     * Reads each hand-in; one that cannot be read adds its one-line message to {@code problems} and is left
+     * out. Two hand-ins of the same name (a/x.zip, b/x.zip) are both kept, the second as x-2.
+     */
+    public static List<Submission> readAll(List<Path> paths, List<String> problems) {
+        List<Submission> subs = new ArrayList<>();
+        java.util.Set<String> names = new java.util.HashSet<>();
+        for (Path p : paths) {
+            try {
+                Submission s = read(p);
+                String name = s.name();
+                for (int k = 2; !names.add(name); k++) {
+                    name = s.name() + "-" + k;
+                }
+                subs.add(name.equals(s.name()) ? s : new Submission(name, s.files(), s.notes()));
+            } catch (IOException e) {
+                problems.add(e.getMessage());
+            }
+        }
+        return subs;
     }
 
     /** The name a submission gets in the class report: its folder's or zip's name, made safe for a file name. */

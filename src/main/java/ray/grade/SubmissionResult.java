@@ -6,6 +6,7 @@ import java.util.Map;
 
 /**
  * Everything the grader found about one submission: what the reports and results.json are written from.
+ * Serializable: raytracer-spark's executors send it to the driver.
  *
  * @param seconds       wall-clock time spent grading it (compile, run, judge)
  * @param renderSeconds the submission's own time to render the test set's scenes (the leaderboard's number)
@@ -14,7 +15,7 @@ import java.util.Map;
  * @param console       what the child JVM printed outside any item (capped)
  */
 public record SubmissionResult(String name, double score, double maxScore, List<TestResult> tests, double seconds,
-                               double renderSeconds, String sandbox, List<String> notes, String console) {
+                               double renderSeconds, String sandbox, List<String> notes, String console) implements java.io.Serializable {
 
     public SubmissionResult {
         tests = List.copyOf(tests);

@@ -12,10 +12,12 @@ import java.util.Map;
  * @param images  for a scene: the report's image files and the judge's values; null for a check
  */
 public record TestResult(String id, String name, String group, TestSet.Kind kind, double score, double maxScore,
-                         String status, String message, String output, double seconds, Images images) {
+                         String status, String message, String output, double seconds, Images images)
+        implements java.io.Serializable {
 
     /** A scene's pictures (file names inside the submission's report folder) and the judge's numbers. */
-    public record Images(String reference, String yours, String difference, String kind, Map<String, Double> metrics) {
+    public record Images(String reference, String yours, String difference, String kind, Map<String, Double> metrics)
+            implements java.io.Serializable {
     }
 
     public boolean passed() {

@@ -13,9 +13,17 @@ final class Progress {
     private long total, done, scenes, start, lastDraw;
     private int width;
 
+    /** What a job is done with, counted beside the tasks: scene (the render) or submission (grade). */
+    private final String noun;
+
     Progress(PrintStream err, boolean show) {
+        this(err, show, "scene");
+    }
+
+    Progress(PrintStream err, boolean show, String noun) {
         this.err = err;
         this.show = show;
+        this.noun = noun;
     }
 
     void start(long tasks, long sceneCount) {
@@ -34,7 +42,7 @@ final class Progress {
         long now = System.nanoTime();
         if (show && now - lastDraw > 250_000_000L) {
             lastDraw = now;
-            String s = line(done, total, scenesDone, scenes, now - start);
+            String s = line(done, total, scenesDone, scenes, noun, now - start);
             width = Math.max(width, s.length());
             err.print("\r" + s + " ".repeat(width - s.length()));
             err.flush();
@@ -43,8 +51,12 @@ final class Progress {
 
     /** {@code 12 of 40 tasks, 1 of 3 scenes, about 20 s left}. */
     static String line(long done, long total, long scenesDone, long scenes, long elapsedNanos) {
+        return line(done, total, scenesDone, scenes, "scene", elapsedNanos);
+    }
+
+    static String line(long done, long total, long unitsDone, long units, String noun, long elapsedNanos) {
         String left = done == 0 ? "" : ", about " + seconds((double) elapsedNanos / done * (total - done) / 1e9) + " left";
-        return "raytracer-spark: " + done + " of " + total + " tasks, " + scenesDone + " of " + scenes + " scene" + (scenes == 1 ? "" : "s")
+        return "raytracer-spark: " + done + " of " + total + " tasks, " + unitsDone + " of " + units + " " + noun + (units == 1 ? "" : "s")
                 + left;
     }
 

@@ -104,17 +104,23 @@ final class SceneBundle implements Serializable {
                 update(d, fileBytes.get(i));
             }
             update(d, overrides.toString().getBytes(StandardCharsets.UTF_8));
-            StringBuilder b = new StringBuilder();
-            for (byte x : d.digest()) {
-                b.append(String.format("%02x", x));
-            }
-            return b.toString();
+            return hex(d);
         } catch (NoSuchAlgorithmException e) {
             throw new IllegalStateException(e);
         }
     }
 
-    private static void update(MessageDigest d, byte[] b) {
+    /** The digest in hex. */
+    static String hex(MessageDigest d) {
+        StringBuilder b = new StringBuilder();
+        for (byte x : d.digest()) {
+            b.append(String.format("%02x", x));
+        }
+        return b.toString();
+    }
+
+    /** Adds {@code b} to the digest, its length first (so no two lists of byte arrays digest alike). */
+    static void update(MessageDigest d, byte[] b) {
         d.update(java.nio.ByteBuffer.allocate(8).putLong(b.length).array());
         d.update(b);
     }
@@ -242,7 +248,7 @@ final class SceneBundle implements Serializable {
         return n;
     }
 
-    private static void deleteTree(Path root) {
+    static void deleteTree(Path root) {
         try (Stream<Path> s = Files.walk(root)) {
             s.sorted(Comparator.reverseOrder()).forEach(p -> p.toFile().delete());
         } catch (IOException e) {

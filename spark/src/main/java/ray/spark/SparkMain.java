@@ -1,6 +1,5 @@
 package ray.spark;
 
-import java.io.File;
 import java.io.PrintStream;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -8,7 +7,6 @@ import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
 import java.util.concurrent.Callable;
-import org.apache.spark.SparkConf;
 import org.apache.spark.api.java.JavaSparkContext;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -27,7 +25,8 @@ import ray.app.SamplingOptions;
         description = {"Renders each scene file to a PNG on an Apache Spark cluster: tiles as tasks, one job for all scenes.",
                 "The images are raytracer's, pixel for pixel. Default master: local[*] (this machine, no cluster needed)."},
         exitCodeListHeading = "%nExit status:%n",
-        exitCodeList = {"0:every scene rendered", "1:a scene could not be read or rendered", "2:bad command line"})
+        exitCodeList = {"0:every scene rendered", "1:a scene could not be read or rendered", "2:bad command line"},
+        subcommands = GradeJob.class)
 public final class SparkMain implements Callable<Integer> {
 
     /** Tile side in pixels (docs/scale-out.md: measured, 64 balances task overhead against load balance). */
@@ -36,8 +35,9 @@ public final class SparkMain implements Callable<Integer> {
     @Parameters(paramLabel = "SCENE", description = "scene files (.txt) to render")
     List<Path> scenes = new ArrayList<>();
 
-    @Option(names = "--master", paramLabel = "URL", description = "the Spark master: local[*] (default), local[N], spark://host:7077, yarn, k8s://...")
-    String master;
+    /** --master, --conf. */
+    @CommandLine.Mixin
+    ClusterOptions cluster = new ClusterOptions();
 
     @Option(names = {"-o", "--output"}, paramLabel = "DIR", description = "the folder the PNGs go into: a local folder or a Hadoop "
             + "file system URI (hdfs://..., s3a://..., file:/...); default: beside each scene")
@@ -68,9 +68,6 @@ public final class SparkMain implements Callable<Integer> {
     @Option(names = "--allow-long", description = "render even a scene whose plan bounds it above 1e11 rays")
     boolean allowLong;
 
-    @Option(names = "--conf", paramLabel = "KEY=VALUE", description = "a Spark setting (repeatable), e.g. --conf spark.ui.enabled=false")
-    List<String> conf = new ArrayList<>();
-
     @Option(names = "--study", description = "the accuracy study (raytracer --study) with its renders as Spark tasks")
     boolean study;
 
@@ -84,8 +81,8 @@ public final class SparkMain implements Callable<Integer> {
             + "(default build/reports/accuracy)")
     Path reportDir;
 
-    private PrintStream out = System.out;
-    private PrintStream err = System.err;
+    PrintStream out = System.out;
+    PrintStream err = System.err;
 
     public static void main(String[] args) {
         int status = run(System.out, System.err, args);
@@ -129,10 +126,8 @@ public final class SparkMain implements Callable<Integer> {
         if (study && output != null) {
             return "--study writes its report to --report-dir, not --output";
         }
-        for (String c : conf) {
-            if (c.indexOf('=') <= 0) {
-                return "--conf takes KEY=VALUE, got '" + c + "'";
-            }
+        if (cluster.problem() != null) {
+            return cluster.problem();
         }
         if (!study) {
             Set<String> names = new LinkedHashSet<>();
@@ -153,7 +148,7 @@ public final class SparkMain implements Callable<Integer> {
             err.println(RenderReport.oneLine("raytracer-spark: " + problem));
             return 2;
         }
-        try (JavaSparkContext jsc = new JavaSparkContext(sparkConf())) {
+        try (JavaSparkContext jsc = new JavaSparkContext(cluster.sparkConf(threads))) {
             if (study) {
                 return StudyJob.run(jsc, scenes, quick, fullSize, reportDir != null ? reportDir : Path.of("build", "reports", "accuracy"),
                         threads, out, err, !quiet && RenderReport.stderrIsTerminal());
@@ -167,51 +162,6 @@ public final class SparkMain implements Callable<Integer> {
     /** The render options given, for each scene to resolve ({@code maxPixels}: the study's size limit, 0 for none). */
     SceneBundle.Overrides overrides(int maxPixels) {
         return new SceneBundle.Overrides(sampling.settings().cutFaint(cutFaint), maxPixels);
-    }
-
-    /**
-     * Spark's settings: spark.* system properties first (what spark-submit passes), then --master (default
-     * local[*]) and --conf; on a cluster, the jars this program runs from are listed in spark.jars so the
-     * executors load its classes from the same jars.
-     */
-    SparkConf sparkConf() {
-        SparkConf c = new SparkConf().setAppName("raytracer-spark");
-        if (master != null) {
-            c.setMaster(master);
-        } else if (!c.contains("spark.master")) {
-            c.setMaster("local[*]");
-        }
-        for (String kv : conf) {
-            int eq = kv.indexOf('=');
-            c.set(kv.substring(0, eq), kv.substring(eq + 1));
-        }
-        if (threads > 1 && !c.contains("spark.task.cpus")) {
-            c.set("spark.task.cpus", Integer.toString(threads));
-        }
-        if (!c.get("spark.master").startsWith("local")) {
-            if (!c.contains("spark.jars")) {
-                c.set("spark.jars", String.join(",", ownJars()));
-            }
-            // Spark's module options for executors include ones newer JDKs know (--sun-misc-unsafe-memory-access):
-            // a Java 17 executor refuses to start on them unless told to ignore what it does not know
-            if (!c.contains("spark.executor.defaultJavaOptions")) {
-                c.set("spark.executor.defaultJavaOptions", "-XX:+IgnoreUnrecognizedVMOptions");
-            }
-        }
-        return c;
-    }
-
-    /** The jars of the ray tracer and the libraries it needs that Spark does not bring (not Spark's own). */
-    static List<String> ownJars() {
-        Set<String> jars = new LinkedHashSet<>();
-        for (Class<?> c : new Class<?>[] {SparkMain.class, ray.Scene.class, javax.vecmath.Vector3d.class, picocli.CommandLine.class,
-                de.javagl.obj.Obj.class}) {
-            java.security.CodeSource src = c.getProtectionDomain().getCodeSource();
-            if (src != null && src.getLocation() != null && src.getLocation().getPath().endsWith(".jar")) {
-                jars.add(new File(src.getLocation().getPath()).getAbsolutePath());
-            }
-        }
-        return new ArrayList<>(jars);
     }
 
     static final class Version implements CommandLine.IVersionProvider {
