@@ -29,7 +29,9 @@ import org.junit.jupiter.api.io.TempDir;
  * distribution's own jars (spark/build/install/raytracer-spark/lib) as child JVMs, jobs submitted with
  * the distribution's launcher, images compared with raytracer's. One job has its executor killed
  * (kill -9) mid-render: the worker starts another, Spark reruns the lost tiles, and the images are still
- * raytracer's, with no partial file in the output folder.
+ * raytracer's, with no partial file in the output folder. spark-submit (its main class, from the same jars)
+ * runs a render in local[2] and grades three hand-ins on the cluster, in bubblewrap on the executors, with
+ * raytracer grade's results.
  */
 class SparkClusterTest {
 
@@ -128,6 +130,34 @@ class SparkClusterTest {
         return pb.start();
     }
 
+    /**
+     * Starts {@code org.apache.spark.deploy.SparkSubmit}, the class the spark-submit script runs, from the
+     * distribution's jars: raytracer-spark's jar as the application, the ray tracer's own jars in --jars,
+     * the Spark options before the application's arguments (README "Scale out").
+     */
+    static Process sparkSubmit(Path log, String master, String... appArgs) throws IOException {
+        List<String> cmd = new ArrayList<>();
+        cmd.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
+        cmd.addAll(JVM_ARGS);
+        cmd.addAll(List.of("-cp", HOME.resolve("lib") + File.separator + "*", "org.apache.spark.deploy.SparkSubmit",
+                "--master", master, "--class", "ray.spark.SparkMain", "--conf", "spark.ui.enabled=false",
+                "--conf", "spark.executor.memory=512m", "--conf", "spark.driver.host=127.0.0.1",
+                "--jars", String.join(",", jar("raytracer-\\d.*"), jar("vecmath-.*"), jar("picocli-.*"), jar("obj-.*")),
+                jar("raytracer-spark-.*")));
+        cmd.addAll(List.of(appArgs));
+        ProcessBuilder pb = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(log.toFile());
+        environment(pb);
+        pb.environment().remove("RAYTRACER_TEST_SLOW_MICROS");
+        return pb.start();
+    }
+
+    /** The distribution's jar whose name matches {@code regex} (without .jar). */
+    static String jar(String regex) throws IOException {
+        List<String> found = files(HOME.resolve("lib")).stream().filter(n -> n.matches(regex + "\\.jar")).toList();
+        assertEquals(1, found.size(), regex + " in " + HOME.resolve("lib"));
+        return HOME.resolve("lib").resolve(found.get(0)).toAbsolutePath().toString();
+    }
+
     /** Where this test's classes are (SlowDiffuse, for the executors). */
     static String testClasses() {
         return Path.of(SlowDiffuse.class.getProtectionDomain().getCodeSource().getLocation().getPath()).toString();
@@ -168,6 +198,27 @@ class SparkClusterTest {
         assertArrayEquals(raytracer(a), Files.readAllBytes(out.resolve("plain.png")));
         String log = Files.readString(dir.resolve("plain.log"));
         assertTrue(log.lines().anyMatch(l -> l.startsWith(a + " -> " + out.resolve("plain.png") + " (40x28, 1x1 AA, ")), "the summary line: " + log);
+    }
+
+    @Test
+    void sparkSubmitRendersInLocalMode() throws Exception {
+        Path a = scene("submitted", 24, 16, false);
+        Path out = dir.resolve("out-submit-local");
+        Process job = sparkSubmit(dir.resolve("submit-local.log"), "local[2]", "-o", out.toString(), a.toString());
+        assertEquals(0, job.waitFor(), Files.readString(dir.resolve("submit-local.log")));
+        assertArrayEquals(raytracer(a), Files.readAllBytes(out.resolve("submitted.png")));
+    }
+
+    @Test
+    void sparkSubmitGradesOnTheClusterAsRaytracerGradeDoes() throws Exception {
+        GradeFixture.prepare();
+        Path out = dir.resolve("out-grade");
+        List<String> args = new ArrayList<>(List.of("grade", "--tests", GradeFixture.tests.toString(), "-o", out.toString()));
+        GradeFixture.handIns.forEach(p -> args.add(p.toString()));
+        Process job = sparkSubmit(dir.resolve("grade.log"), url, args.toArray(new String[0]));
+        assertEquals(0, job.waitFor(), Files.readString(dir.resolve("grade.log")));
+        GradeFixture.assertSameReports(out);
+        assertTrue(Files.readString(dir.resolve("grade.log")).contains("at a time; bubblewrap)"), "graded in bubblewrap on the executors");
     }
 
     @Test
