@@ -34,7 +34,8 @@ record Reference(Image image, int ns, int levels, double noiseSteps, ImageError 
         int ns = startNs, levels = 0;
         ImageError change = null;
         while (true) {
-            Image a = render(renderer, scene, sampler, ns, 1, tick), b = render(renderer, scene, sampler, ns, 2, tick);
+            List<Image> halves = render(renderer, scene, sampler, ns, tick);
+            Image a = halves.get(0), b = halves.get(1);
             levels++;
             mean = mean(a, b);
             noise = ImageError.of(a, b).rmse / 2 / ImageError.STEP;
@@ -50,10 +51,12 @@ record Reference(Image image, int ns, int levels, double noiseSteps, ImageError 
         return new Reference(mean, ns, levels, noise, change, sampler);
     }
 
-    private static Image render(StudyRenderer renderer, Scene scene, String sampler, int ns, int seed, SceneStudy.Tick tick) {
-        Image img = renderer.render(scene, new Setting(sampler, "reference", ns, 0, scene.maxDepth, seed)).image();
-        tick.rendered((double) scene.width * scene.height * ns * ns);
-        return img;
+    /** The two halves of a level (seeds 1 and 2), as one batch (raytracer-spark renders both at once, in tiles). */
+    private static List<Image> render(StudyRenderer renderer, Scene scene, String sampler, int ns, SceneStudy.Tick tick) {
+        List<StudyRenderer.Result> r = renderer.renderAll(scene, List.of(new Setting(sampler, Setting.REFERENCE, ns, 0, scene.maxDepth, 1),
+                new Setting(sampler, Setting.REFERENCE, ns, 0, scene.maxDepth, 2)));
+        tick.rendered(2.0 * scene.width * scene.height * ns * ns);
+        return List.of(r.get(0).image(), r.get(1).image());
     }
 
     /**

@@ -3,7 +3,6 @@ package ray.study;
 import java.util.List;
 import ray.Scene;
 import ray.render.Image;
-import ray.settings.RenderSettings;
 import ray.render.RenderSummary;
 import ray.render.Renderer;
 import ray.render.Sampler;
@@ -24,11 +23,7 @@ final class RendererAdapter implements StudyRenderer {
 
     @Override
     public Result render(Scene scene, Setting s) {
-        RenderSettings settings = new RenderSettings().sampler(s.sampler()).samples(s.ns()).maxDepth(s.maxDepth()).seed(s.seed());
-        if (s.sampler().equals("adaptive")) {
-            settings = settings.targetError(s.targetError());
-        }
-        Renderer r = new Renderer(scene).settings(settings).threads(threads);
+        Renderer r = new Renderer(scene).settings(s.renderSettings()).threads(threads);
         Image image = r.render();
         RenderSummary sum = r.summary();
         boolean adaptive = r.resolvedSettings().adaptive();

@@ -62,6 +62,12 @@ public final class Study {
         return new RendererAdapter(threads);
     }
 
+    /** Where the scene {@code -} is read from (default: standard input). */
+    public Study in(java.io.InputStream stream) {
+        this.in = stream;
+        return this;
+    }
+
     /** Renders scenes with more pixels than {@code n} at n pixels (same camera and aspect ratio). */
     public Study maxPixels(int n) {
         if (n < 1) {

@@ -71,19 +71,31 @@ final class SceneBundle implements Serializable {
      * OBJ file its meshes (CSG operands included) read.
      */
     static SceneBundle of(Path path, Scene parsed, Overrides overrides) throws IOException {
-        Path folder = path.toAbsolutePath().getParent();
+        return of(path.toString(), Files.readAllBytes(path), path.toAbsolutePath().getParent(), parsed, overrides);
+    }
+
+    /**
+     * The bundle of a scene the driver has parsed from {@code bytes} (named {@code name}: {@code -} for
+     * standard input), its OBJ files read from {@code folder}.
+     */
+    static SceneBundle of(String name, byte[] bytes, Path folder, Scene parsed, Overrides overrides) throws IOException {
         List<String> files = new ArrayList<>();
-        List<byte[]> bytes = new ArrayList<>();
+        List<byte[]> fileBytes = new ArrayList<>();
         List<Surface> todo = new ArrayList<>(parsed.surfaces);
         while (!todo.isEmpty()) {
             Surface s = todo.remove(todo.size() - 1);
             todo.addAll(s.operands());
             if (s instanceof Mesh m && m.file != null && !files.contains(m.file)) {
                 files.add(m.file);
-                bytes.add(Files.readAllBytes(folder.resolve(m.file)));
+                fileBytes.add(Files.readAllBytes(folder.resolve(m.file)));
             }
         }
-        return new SceneBundle(path.toString(), Files.readAllBytes(path), files, bytes, overrides);
+        return new SceneBundle(name, bytes, files, fileBytes, overrides);
+    }
+
+    /** The same scene with other render options (the study's reference renders: one bundle per setting). */
+    SceneBundle with(Overrides other) {
+        return new SceneBundle(name, scene, files, fileBytes, other);
     }
 
     /** Total bytes shipped. */
@@ -206,7 +218,7 @@ final class SceneBundle implements Serializable {
                 dir = dir.resolve("d" + i);
             }
             Files.createDirectories(dir);
-            String fileName = Path.of(name).getFileName() == null ? "scene.txt" : Path.of(name).getFileName().toString();
+            String fileName = name.equals("-") || Path.of(name).getFileName() == null ? "scene.txt" : Path.of(name).getFileName().toString();
             Path scenePath = dir.resolve(fileName);
             Files.write(scenePath, scene);
             for (int i = 0; i < files.size(); i++) {

@@ -32,7 +32,7 @@ public final class SparkMain implements Callable<Integer> {
     /** Tile side in pixels (docs/scale-out.md: measured, 64 balances task overhead against load balance). */
     static final int DEFAULT_TILE = 64;
 
-    @Parameters(paramLabel = "SCENE", description = "scene files (.txt) to render")
+    @Parameters(paramLabel = "SCENE", description = "scene files (.txt) to render; with --study, - reads one from standard input")
     List<Path> scenes = new ArrayList<>();
 
     /** --master, --conf. */
@@ -43,7 +43,8 @@ public final class SparkMain implements Callable<Integer> {
             + "file system URI (hdfs://..., s3a://..., file:/...); default: beside each scene")
     String output;
 
-    @Option(names = "--tile", paramLabel = "N", description = "tile side in pixels, one task a tile (default: ${DEFAULT-VALUE})")
+    @Option(names = "--tile", paramLabel = "N", description = "tile side in pixels, one task a tile (default: ${DEFAULT-VALUE}; "
+            + "--study: its reference renders' tiles)")
     int tile = DEFAULT_TILE;
 
     @Option(names = {"-j", "--threads"}, paramLabel = "N", description = "render threads per task (default 1; also sets spark.task.cpus)")
@@ -83,6 +84,8 @@ public final class SparkMain implements Callable<Integer> {
 
     PrintStream out = System.out;
     PrintStream err = System.err;
+    /** Where the study's scene {@code -} is read from. */
+    java.io.InputStream in = System.in;
 
     public static void main(String[] args) {
         int status = run(System.out, System.err, args);
@@ -92,7 +95,13 @@ public final class SparkMain implements Callable<Integer> {
 
     /** Runs the command line and returns the exit status (never exits the JVM). */
     public static int run(PrintStream out, PrintStream err, String... args) {
+        return run(System.in, out, err, args);
+    }
+
+    /** The same, the scene {@code -} (with --study) read from {@code in}. */
+    public static int run(java.io.InputStream in, PrintStream out, PrintStream err, String... args) {
         SparkMain m = new SparkMain();
+        m.in = in;
         m.out = out;
         m.err = err;
         CommandLine cl = new CommandLine(m);
@@ -129,6 +138,13 @@ public final class SparkMain implements Callable<Integer> {
         if (cluster.problem() != null) {
             return cluster.problem();
         }
+        long stdin = scenes.stream().filter(p -> p.toString().equals("-")).count();
+        if (stdin > 1) {
+            return "standard input ('-') can be read only once";
+        }
+        if (stdin > 0 && !study) {
+            return "a scene from standard input ('-') is read by --study only; to render it, give its file (the PNG is named after it)";
+        }
         if (!study) {
             Set<String> names = new LinkedHashSet<>();
             for (Path p : scenes) {
@@ -148,10 +164,19 @@ public final class SparkMain implements Callable<Integer> {
             err.println(RenderReport.oneLine("raytracer-spark: " + problem));
             return 2;
         }
+        byte[] stdin = null;
+        if (scenes.stream().anyMatch(p -> p.toString().equals("-"))) {
+            try {
+                stdin = in.readAllBytes();   // before Spark starts: the driver ships these bytes as the scene's file
+            } catch (java.io.IOException e) {
+                err.println(RenderReport.oneLine("raytracer-spark: cannot read standard input: " + e.getMessage()));
+                return 1;
+            }
+        }
         try (JavaSparkContext jsc = new JavaSparkContext(cluster.sparkConf(threads))) {
             if (study) {
                 return StudyJob.run(jsc, scenes, quick, fullSize, reportDir != null ? reportDir : Path.of("build", "reports", "accuracy"),
-                        threads, out, err, !quiet && RenderReport.stderrIsTerminal());
+                        threads, tile, stdin, out, err, !quiet && RenderReport.stderrIsTerminal());
             }
             RenderJob.Options o = new RenderJob.Options(output, tile, threads,
                     overrides(0), quiet, stats, json, allowLong);

@@ -24,17 +24,24 @@ import ray.study.StudySettings;
  * {@code raytracer-spark --study}: {@code raytracer --study} (ray.study: the same settings, reference,
  * errors, CSVs, plots and index.html) with its renders run as Spark tasks: each scene's (setting, repeat)
  * renders as the tasks of one job, each timed inside its task on the executor that ran it; the warm-up
- * and the reference's renders one task each.
+ * one task; the reference's renders (images only, no times) in tiles.
  */
 final class StudyJob {
 
     private StudyJob() {
     }
 
-    static int run(JavaSparkContext jsc, List<Path> scenes, boolean quick, boolean fullSize, Path dir, int threads, PrintStream out,
-                   PrintStream err, boolean progress) {
-        SparkStudyRenderer renderer = new SparkStudyRenderer(jsc, threads, fullSize ? 0 : StudySettings.MAX_PIXELS);
+    /**
+     * Runs the study; {@code tile}: the side of the reference renders' tiles; {@code stdin}: the scene
+     * {@code -} (read from standard input by the caller), or null.
+     */
+    static int run(JavaSparkContext jsc, List<Path> scenes, boolean quick, boolean fullSize, Path dir, int threads, int tile, byte[] stdin,
+                   PrintStream out, PrintStream err, boolean progress) {
+        SparkStudyRenderer renderer = new SparkStudyRenderer(jsc, threads, tile, fullSize ? 0 : StudySettings.MAX_PIXELS, stdin);
         Study s = new Study(renderer, quick ? StudySettings.QUICK : StudySettings.FULL, 3, out, err, progress);
+        if (stdin != null) {
+            s.in(new java.io.ByteArrayInputStream(stdin));
+        }
         if (fullSize) {
             s.maxPixels(Integer.MAX_VALUE);
         }
@@ -108,16 +115,23 @@ final class StudyJob {
         }
     }
 
-    /** The study's renderer: renders as Spark tasks, the scene shipped once per executor. */
+    /**
+     * The study's renderer: renders as Spark tasks, the scene shipped once per executor. A timed render is
+     * one task (its time is the task's); the converged reference's renders, whose times the study does not
+     * use, are cut into tiles like {@code raytracer-spark}'s renders (the same pixels, bit for bit).
+     */
     static final class SparkStudyRenderer implements StudyRenderer {
         private final JavaSparkContext jsc;
-        private final int threads, maxPixels;
+        private final int threads, tile, maxPixels;
+        private final byte[] stdin;
         private Broadcast<SceneBundle> current;
 
-        SparkStudyRenderer(JavaSparkContext jsc, int threads, int maxPixels) {
+        SparkStudyRenderer(JavaSparkContext jsc, int threads, int tile, int maxPixels, byte[] stdin) {
             this.jsc = jsc;
             this.threads = threads;
+            this.tile = tile;
             this.maxPixels = maxPixels;
+            this.stdin = stdin;
         }
 
         @Override
@@ -128,8 +142,10 @@ final class StudyJob {
         @Override
         public void studying(Path file, Scene scene) {
             close();
+            SceneBundle.Overrides o = new SceneBundle.Overrides(new ray.settings.RenderSettings(), maxPixels);
             try {
-                current = jsc.broadcast(SceneBundle.of(file, scene, new SceneBundle.Overrides(new ray.settings.RenderSettings(), maxPixels)));
+                current = jsc.broadcast(file.toString().equals("-") && stdin != null
+                        ? SceneBundle.of("-", stdin, Path.of("").toAbsolutePath(), scene, o) : SceneBundle.of(file, scene, o));
             } catch (IOException e) {
                 throw new UncheckedIOException(file + ": cannot read the scene's files: " + e.getMessage(), e);
             }
@@ -145,6 +161,30 @@ final class StudyJob {
             if (current == null) {
                 throw new IllegalStateException("studying(file, scene) was not called");
             }
+            // the reference's renders in tiles, the others one task each; the results in the order asked
+            List<Integer> tiled = new ArrayList<>(), whole = new ArrayList<>();
+            for (int i = 0; i < settings.size(); i++) {
+                Setting s = settings.get(i);
+                (s.label().equals(Setting.REFERENCE) && !s.sampler().equals("adaptive") ? tiled : whole).add(i);
+            }
+            Result[] results = new Result[settings.size()];
+            if (!tiled.isEmpty()) {
+                List<Result> r = renderTiled(scene, tiled.stream().map(settings::get).toList());
+                for (int k = 0; k < tiled.size(); k++) {
+                    results[tiled.get(k)] = r.get(k);
+                }
+            }
+            if (!whole.isEmpty()) {
+                List<Result> r = renderWhole(whole.stream().map(settings::get).toList());
+                for (int k = 0; k < whole.size(); k++) {
+                    results[whole.get(k)] = r.get(k);
+                }
+            }
+            return List.of(results);
+        }
+
+        /** Each setting as one task, timed inside it. */
+        private List<Result> renderWhole(List<Setting> settings) {
             List<Render> renders = new ArrayList<>();
             for (Setting s : settings) {
                 renders.add(Render.of(s));
@@ -159,6 +199,48 @@ final class StudyJob {
                 out.add(r.result());
             }
             return out;
+        }
+
+        /**
+         * Each setting's image cut into tiles, all tiles one job (the render job's tasks: the scene parsed
+         * and prepared once per executor JVM and setting), assembled here; the time is the job's.
+         */
+        private List<Result> renderTiled(Scene scene, List<Setting> settings) {
+            SceneBundle[] bundles = new SceneBundle[settings.size()];
+            List<Tasks.Task> tasks = new ArrayList<>();
+            for (int i = 0; i < bundles.length; i++) {
+                bundles[i] = current.value().with(new SceneBundle.Overrides(settings.get(i).renderSettings(), maxPixels));
+                for (int y = 0; y < scene.height; y += tile) {
+                    for (int x = 0; x < scene.width; x += tile) {
+                        tasks.add(Tasks.Task.tile(i, x, y, Math.min(scene.width, x + tile), Math.min(scene.height, y + tile)));
+                    }
+                }
+            }
+            Broadcast<SceneBundle[]> shipped = jsc.broadcast(bundles);
+            try {
+                jsc.setJobDescription("raytracer-spark --study: " + current.value().name + ", reference, " + tasks.size() + " tiles");
+                long t0 = System.nanoTime();
+                List<Tasks.Result> done = jsc.parallelize(tasks, tasks.size()).map(new Tasks.Render(shipped, threads)).collect();
+                double seconds = (System.nanoTime() - t0) / 1e9;
+                ray.render.SplitRender.Assembly[] a = new ray.render.SplitRender.Assembly[bundles.length];
+                for (Tasks.Result r : done) {
+                    if (r.failure() != null) {
+                        throw new IllegalStateException(r.failure());
+                    }
+                    if (a[r.scene()] == null) {
+                        a[r.scene()] = new ray.render.SplitRender.Assembly(scene.width, scene.height);
+                    }
+                    a[r.scene()].add(r.piece());
+                }
+                List<Result> out = new ArrayList<>();
+                for (ray.render.SplitRender.Assembly x : a) {
+                    ray.render.RenderSummary sum = x.summary(seconds);
+                    out.add(new Result(x.image(), seconds, x.stats(), sum.meanSamplesPerPixel, StudyRenderer.Estimate.NONE));
+                }
+                return out;
+            } finally {
+                shipped.destroy();
+            }
         }
 
         void close() {

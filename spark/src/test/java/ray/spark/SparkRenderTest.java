@@ -237,14 +237,29 @@ class SparkRenderTest {
         assertEquals(0, ray.app.Main.run(new PrintStream(ignored), System.err, "--study", "--quick", "--report-dir",
                 dir.resolve("local").toString(), scene.toString()));
         int jobs = JOBS.get();
-        assertEquals(0, StudyJob.run(jsc, List.of(scene), true, false, dir.resolve("spark"), 1, new PrintStream(ignored), System.err, false));
-        assertTrue(JOBS.get() - jobs >= 3, "the renders ran as Spark jobs");
+        // the file, and the same scene from standard input; the reference renders in tiles of 5 x 5
+        assertEquals(0, StudyJob.run(jsc, List.of(scene, Path.of("-")), true, false, dir.resolve("spark"), 1, 5, Files.readAllBytes(scene),
+                new PrintStream(ignored), System.err, false));
+        assertTrue(JOBS.get() - jobs >= 6, "the renders ran as Spark jobs");
         assertEquals(withoutTimes(dir.resolve("local/tiny.csv")), withoutTimes(dir.resolve("spark/tiny.csv")),
                 "the same settings, errors, estimates and rays; only the times differ");
+        assertEquals(withoutTimes(dir.resolve("local/tiny.csv")), withoutTimes(dir.resolve("spark/stdin.csv")), "the scene read from stdin");
         for (String f : List.of("index.html", "tiny-error-vs-time.png", "tiny-crops.png", "adaptive-honesty.png")) {
             assertTrue(Files.size(dir.resolve("spark").resolve(f)) > 0, f);
         }
         assertTrue(Files.readString(dir.resolve("spark/index.html")).contains("different machines"), "the report says where the times come from");
+    }
+
+    @Test
+    void standardInputIsReadByTheStudyOnly() {
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        assertEquals(2, SparkMain.run(new PrintStream(new ByteArrayOutputStream()), new PrintStream(err, true, StandardCharsets.UTF_8), "-"));
+        assertEquals("raytracer-spark: a scene from standard input ('-') is read by --study only; to render it, give its file "
+                + "(the PNG is named after it)", err.toString(StandardCharsets.UTF_8).strip());
+        err.reset();
+        assertEquals(2, SparkMain.run(new PrintStream(new ByteArrayOutputStream()), new PrintStream(err, true, StandardCharsets.UTF_8),
+                "--study", "-", "-"));
+        assertEquals("raytracer-spark: standard input ('-') can be read only once", err.toString(StandardCharsets.UTF_8).strip());
     }
 
     /** A study CSV without its time columns (any whose header names seconds or a speed). */
