@@ -2,7 +2,6 @@ package ray.spark;
 
 import java.io.IOException;
 import java.io.PrintStream;
-import java.io.Serializable;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -29,8 +28,6 @@ import ray.grade.Sandbox;
 import ray.grade.Submission;
 import ray.grade.SubmissionResult;
 import ray.grade.TestSet;
-import scala.reflect.ClassTag;
-import scala.runtime.AbstractFunction1;
 import scala.runtime.AbstractFunction2;
 import scala.runtime.BoxedUnit;
 
@@ -140,9 +137,9 @@ final class GradeJob implements Callable<Integer> {
         OnResult collect = new OnResult(subs, progress, out, err);
         JavaRDD<GradeTasks.Hand> rdd = jsc.parallelize(hands, hands.size());
         jsc.setJobDescription("raytracer-spark grade: " + hands.size() + " submission(s), test set of " + set.items().size() + " item(s)");
-        ClassTag<GradeTasks.Graded[]> tag = scala.reflect.ClassTag$.MODULE$.apply(GradeTasks.Graded[].class);
         try {
-            jsc.sc().runJob(rdd.rdd(), new OnPartition(new GradeTasks.Grade(shipped, sandbox, work)), collect, tag);
+            jsc.sc().runJob(rdd.rdd(), new EachTask<>(new GradeTasks.Grade(shipped, sandbox, work), GradeTasks.Graded.class), collect,
+                    EachTask.arrayTag(GradeTasks.Graded.class));
         } catch (Exception e) {     // SparkException, thrown undeclared by Scala code: the job failed as a whole
             Throwable cause = !(e instanceof SparkException) && e.getCause() instanceof SparkException ? e.getCause() : e;
             progress.clear();
@@ -173,26 +170,6 @@ final class GradeJob implements Callable<Integer> {
                 Math.min(subs.size(), jsc.defaultParallelism()));
         out.println(line);
         return collect.failed.size();
-    }
-
-    /** The executor side of a partition: its one submission graded. */
-    static final class OnPartition extends AbstractFunction1<scala.collection.Iterator<GradeTasks.Hand>, GradeTasks.Graded[]>
-            implements Serializable {
-        private static final long serialVersionUID = 1L;
-        private final GradeTasks.Grade grade;
-
-        OnPartition(GradeTasks.Grade grade) {
-            this.grade = grade;
-        }
-
-        @Override
-        public GradeTasks.Graded[] apply(scala.collection.Iterator<GradeTasks.Hand> it) {
-            List<GradeTasks.Graded> out = new ArrayList<>();
-            while (it.hasNext()) {
-                out.add(grade.call(it.next()));
-            }
-            return out.toArray(new GradeTasks.Graded[0]);
-        }
     }
 
     /** The driver side: each submission's report written as it arrives (Spark calls this from one thread). */

@@ -2,7 +2,6 @@ package ray.spark;
 
 import java.io.IOException;
 import java.io.PrintStream;
-import java.io.Serializable;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashSet;
@@ -22,8 +21,6 @@ import ray.render.Image;
 import ray.render.RenderSummary;
 import ray.render.SplitRender;
 import ray.settings.RenderSettings;
-import scala.reflect.ClassTag;
-import scala.runtime.AbstractFunction1;
 import scala.runtime.AbstractFunction2;
 import scala.runtime.BoxedUnit;
 
@@ -264,9 +261,9 @@ final class RenderJob {
     private void runTasks(List<Tasks.Task> tasks, List<Job> jobs, Broadcast<SceneBundle[]> shipped, String what) {
         JavaRDD<Tasks.Task> rdd = jsc.parallelize(tasks, tasks.size());
         jsc.setJobDescription("raytracer-spark: " + what + " (" + jobs.size() + " scene(s), " + tasks.size() + " tasks)");
-        ClassTag<Tasks.Result[]> tag = scala.reflect.ClassTag$.MODULE$.apply(Tasks.Result[].class);
         try {
-            jsc.sc().runJob(rdd.rdd(), new OnPartition(new Tasks.Render(shipped, o.threads())), new OnResult(jobs), tag);
+            jsc.sc().runJob(rdd.rdd(), new EachTask<>(new Tasks.Render(shipped, o.threads()), Tasks.Result.class), new OnResult(jobs),
+                    EachTask.arrayTag(Tasks.Result.class));
         } catch (Exception e) {       // SparkException, thrown undeclared by Scala code
             // the job failed as a whole (a task lost spark.task.maxFailures times, the cluster gone): the
             // scenes not yet written fail with Spark's reason, the others are kept
@@ -286,25 +283,6 @@ final class RenderJob {
         }
         int n = s.indexOf('\n');
         return n < 0 ? s : s.substring(0, n);
-    }
-
-    /** The executor side of a partition: its one task rendered. */
-    static final class OnPartition extends AbstractFunction1<scala.collection.Iterator<Tasks.Task>, Tasks.Result[]> implements Serializable {
-        private static final long serialVersionUID = 1L;
-        private final Tasks.Render render;
-
-        OnPartition(Tasks.Render render) {
-            this.render = render;
-        }
-
-        @Override
-        public Tasks.Result[] apply(scala.collection.Iterator<Tasks.Task> it) {
-            List<Tasks.Result> out = new ArrayList<>();
-            while (it.hasNext()) {
-                out.add(render.call(it.next()));
-            }
-            return out.toArray(new Tasks.Result[0]);
-        }
     }
 
     /** The driver side: each partition's results, as they arrive (Spark calls this from one thread). */

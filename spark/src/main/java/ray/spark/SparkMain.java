@@ -109,7 +109,8 @@ public final class SparkMain implements Callable<Integer> {
         cl.setErr(new java.io.PrintWriter(err, true));
         cl.setExpandAtFiles(false);
         cl.setParameterExceptionHandler((e, a) -> {
-            err.println(RenderReport.oneLine("raytracer-spark: " + e.getMessage() + " (see raytracer-spark --help)"));
+            String name = e.getCommandLine() == cl ? "raytracer-spark" : "raytracer-spark " + e.getCommandLine().getCommandName();
+            err.println(RenderReport.oneLine(name + ": " + e.getMessage() + " (see " + name + " --help)"));
             return 2;
         });
         return cl.execute(args);

@@ -65,6 +65,9 @@ class SparkGradeTest {
         assertTrue(r.err().startsWith("raytracer-spark grade: ") && r.err().contains("no rubric.txt") && r.err().strip().lines().count() == 1,
                 r.err());
         assertFalse(Files.exists(dir.resolve("o")), "nothing written on a usage mistake");
+        r = run("grade", "--jobs", "2", "-o", dir.resolve("o").toString(), "x.zip");
+        assertEquals(2, r.status());
+        assertEquals("raytracer-spark grade: Unknown option: '--jobs' (see raytracer-spark grade --help)", r.err().strip());
         r = run("grade", "--help");
         assertEquals(0, r.status());
         assertTrue(r.out().contains("--master") && r.out().contains("--sandbox") && r.out().contains("grades.csv"), r.out());
