@@ -12,6 +12,7 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
@@ -38,18 +39,12 @@ public final class GradeCommand implements Callable<Integer> {
             + "ROOT/submission and write ROOT/results/results.json (run_autograder passes /autograder)")
     Path gradescope;
 
-    @Option(names = "--tests", paramLabel = "DIR", description = "a test set (a folder with rubric.txt); default: the course kit's grading/")
-    Path tests;
-
     @Option(names = {"-j", "--jobs"}, paramLabel = "N", description = "submissions graded at once (default: the number of cores, ${DEFAULT-VALUE})")
     int jobs = Runtime.getRuntime().availableProcessors();
 
-    @Option(names = "--sandbox", paramLabel = "MODE", description = "auto (bubblewrap when it works here, else none), bwrap, or none "
-            + "(no isolation: trusted code only)")
-    String sandbox = "auto";
-
-    @Option(names = "--work", paramLabel = "DIR", description = "scratch space for the child JVMs (default: the system's temporary folder)")
-    Path work;
+    /** --tests, --sandbox, --work. */
+    @Mixin
+    GradeOptions grading = new GradeOptions();
 
     @Parameters(paramLabel = "SUBMISSION", arity = "0..*", description = "folders or .zip files, one per student")
     List<Path> submissions = new ArrayList<>();
@@ -99,8 +94,8 @@ public final class GradeCommand implements Callable<Integer> {
         TestSet set;
         Sandbox box;
         try {
-            set = TestSet.load(tests != null ? tests : defaultTests());
-            box = Sandbox.choose(sandbox);
+            set = grading.testSet();
+            box = Sandbox.choose(grading.sandbox);
             if (gradescope != null) {
                 return gradescope(set, box, out, err);
             }
@@ -113,7 +108,7 @@ public final class GradeCommand implements Callable<Integer> {
             err.println("raytracer grade: warning: " + box.description());
         }
         try {
-            Path scratch = work != null ? Files.createDirectories(work) : Path.of(System.getProperty("java.io.tmpdir"));
+            Path scratch = GradeOptions.scratch(grading.work);
             Grader grader = new Grader(set, box, Judge.standard(), Files.createTempDirectory(scratch, "raytracer-grade-"));
             try {
                 return gradeAll(grader, out, err);
@@ -130,7 +125,7 @@ public final class GradeCommand implements Callable<Integer> {
     /** One submission, Gradescope's way: ROOT/submission in, ROOT/results/results.json out (its report beside it). */
     private int gradescope(TestSet set, Sandbox box, PrintStream out, PrintStream err) throws IOException {
         Path results = Files.createDirectories(gradescope.resolve("results"));
-        Path scratch = work != null ? Files.createDirectories(work) : Path.of(System.getProperty("java.io.tmpdir"));
+        Path scratch = GradeOptions.scratch(grading.work);
         Grader grader = new Grader(set, box, Judge.standard(), Files.createTempDirectory(scratch, "raytracer-grade-"));
         try {
             Submission s = Submission.read(gradescope.resolve("submission"));

@@ -22,9 +22,8 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.ParentCommand;
 import ray.app.RenderReport;
-import ray.grade.GradeCommand;
+import ray.grade.GradeOptions;
 import ray.grade.Reports;
-import ray.grade.Sandbox;
 import ray.grade.Submission;
 import ray.grade.SubmissionResult;
 import ray.grade.TestSet;
@@ -61,17 +60,9 @@ final class GradeJob implements Callable<Integer> {
     @Option(names = {"-o", "--output"}, paramLabel = "DIR", description = "where the reports go (created; on the driver's file system)")
     Path output;
 
-    @Option(names = "--tests", paramLabel = "DIR", description = "a test set (a folder with rubric.txt), read on the driver and shipped "
-            + "to the executors; default: the course kit's grading/")
-    Path tests;
-
-    @Option(names = "--sandbox", paramLabel = "MODE", description = "auto (bubblewrap where it works on the executor's host, else none), "
-            + "bwrap (refuse to grade without it), or none (no isolation: trusted code only)")
-    String sandbox = "auto";
-
-    @Option(names = "--work", paramLabel = "DIR", description = "scratch space for the child JVMs on each executor (default: the "
-            + "executor's temporary folder)")
-    String work;
+    /** --tests (read on the driver, shipped to the executors), --sandbox (chosen on each executor), --work (a folder on each executor). */
+    @CommandLine.Mixin
+    GradeOptions grading = new GradeOptions();
 
     @Parameters(paramLabel = "SUBMISSION", arity = "0..*", description = "folders or .zip files, one per student")
     List<Path> submissions = new ArrayList<>();
@@ -90,8 +81,7 @@ final class GradeJob implements Callable<Integer> {
         }
         TestSet set;
         try {
-            Sandbox.checkMode(sandbox);
-            set = TestSet.load(tests != null ? tests : GradeCommand.defaultTests());
+            set = grading.testSet();
             Files.createDirectories(output);
         } catch (IOException e) {
             err.println(RenderReport.oneLine("raytracer-spark grade: " + e.getMessage()));
@@ -138,7 +128,7 @@ final class GradeJob implements Callable<Integer> {
         JavaRDD<GradeTasks.Hand> rdd = jsc.parallelize(hands, hands.size());
         jsc.setJobDescription("raytracer-spark grade: " + hands.size() + " submission(s), test set of " + set.items().size() + " item(s)");
         try {
-            jsc.sc().runJob(rdd.rdd(), new EachTask<>(new GradeTasks.Grade(shipped, sandbox, work), GradeTasks.Graded.class), collect,
+            jsc.sc().runJob(rdd.rdd(), new EachTask<>(new GradeTasks.Grade(shipped, grading.sandbox, grading.work == null ? null : grading.work.toString()), GradeTasks.Graded.class), collect,
                     EachTask.arrayTag(GradeTasks.Graded.class));
         } catch (Exception e) {     // SparkException, thrown undeclared by Scala code: the job failed as a whole
             Throwable cause = !(e instanceof SparkException) && e.getCause() instanceof SparkException ? e.getCause() : e;

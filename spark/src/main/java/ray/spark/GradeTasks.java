@@ -15,6 +15,7 @@ import java.util.TreeMap;
 import java.util.stream.Stream;
 import org.apache.spark.api.java.function.Function;
 import org.apache.spark.broadcast.Broadcast;
+import ray.grade.GradeOptions;
 import ray.grade.Grader;
 import ray.grade.Judge;
 import ray.grade.Sandbox;
@@ -188,8 +189,7 @@ final class GradeTasks {
             if (s != null) {
                 return s;
             }
-            Path scratch = work != null ? Files.createDirectories(Path.of(work)) : Path.of(System.getProperty("java.io.tmpdir"));
-            Path home = Files.createTempDirectory(scratch, "raytracer-spark-grade-");
+            Path home = Files.createTempDirectory(GradeOptions.scratch(work == null ? null : Path.of(work)), "raytracer-spark-grade-");
             try {
                 TestSet set = b.writeTo(Files.createDirectories(home.resolve("tests")));
                 s = new Station(home, new Grader(set, Sandbox.choose(mode), Judge.standard(), Files.createDirectories(home.resolve("work"))));
