@@ -128,8 +128,8 @@ final class GradeJob implements Callable<Integer> {
         JavaRDD<GradeTasks.Hand> rdd = jsc.parallelize(hands, hands.size());
         jsc.setJobDescription("raytracer-spark grade: " + hands.size() + " submission(s), test set of " + set.items().size() + " item(s)");
         try {
-            jsc.sc().runJob(rdd.rdd(), new EachTask<>(new GradeTasks.Grade(shipped, grading.sandbox, grading.work == null ? null : grading.work.toString()), GradeTasks.Graded.class), collect,
-                    EachTask.arrayTag(GradeTasks.Graded.class));
+            GradeTasks.Grade grade = new GradeTasks.Grade(shipped, grading.sandbox, grading.work == null ? null : grading.work.toString());
+            jsc.sc().runJob(rdd.rdd(), new EachTask<>(grade, GradeTasks.Graded.class), collect, EachTask.arrayTag(GradeTasks.Graded.class));
         } catch (Exception e) {     // SparkException, thrown undeclared by Scala code: the job failed as a whole
             Throwable cause = !(e instanceof SparkException) && e.getCause() instanceof SparkException ? e.getCause() : e;
             progress.clear();
@@ -143,9 +143,6 @@ final class GradeJob implements Callable<Integer> {
         } finally {
             shipped.destroy();
             progress.clear();
-        }
-        if (collect.writeFailure != null) {
-            throw collect.writeFailure;
         }
         List<SubmissionResult> results = new ArrayList<>(collect.results.values());
         Set<String> boxes = new LinkedHashSet<>();
@@ -166,7 +163,6 @@ final class GradeJob implements Callable<Integer> {
     private final class OnResult extends AbstractFunction2<Object, GradeTasks.Graded[], BoxedUnit> {
         final Map<Integer, SubmissionResult> results = new TreeMap<>();
         final Set<Integer> failed = new HashSet<>();
-        IOException writeFailure;
         private final List<Submission> subs;
         private final Progress progress;
         private final PrintStream out, err;
@@ -198,9 +194,8 @@ final class GradeJob implements Callable<Integer> {
                         results.put(g.index(), g.result());
                         out.println(Reports.scoreLine(g.result()));
                     } catch (IOException e) {
-                        if (writeFailure == null) {
-                            writeFailure = e;
-                        }
+                        err.println(RenderReport.oneLine("raytracer-spark grade: " + g.result().name() + ": cannot write its report: "
+                                + e.getMessage()));
                         failed.add(g.index());
                     }
                 }
