@@ -13,6 +13,13 @@ public final class RenderSummary {
     public final int samplesPerSide;
     /** Wall time of the render (after parsing; including the BVH build), in seconds. */
     public final double seconds;
+    /**
+     * CPU time of the render in seconds: the calling thread's (plan, scene preparation, BVH build) and
+     * every render thread's, read from the threads' own clocks, so other work in the process or on the
+     * machine does not count; NaN unless {@link Renderer#measureCpu(boolean)} asked for it. The fork/join
+     * pool's share of a parallel BVH build (meshes of 16,384 primitives and more) is not in it.
+     */
+    public final double cpuSeconds;
     /** Rays cast, by kind. */
     public final RayStats stats;
     /** Samples taken over pixels. */
@@ -40,9 +47,17 @@ public final class RenderSummary {
     RenderSummary(String sampler, int samplesPerSide, double seconds, RayStats stats, double meanSamplesPerPixel,
                   double estimatedRmse, double estimatedRmseLow, double estimatedRmseHigh, double probeSamplesPerPixel,
                   Film film) {
+        this(sampler, samplesPerSide, seconds, Double.NaN, stats, meanSamplesPerPixel, estimatedRmse, estimatedRmseLow, estimatedRmseHigh,
+                probeSamplesPerPixel, film);
+    }
+
+    RenderSummary(String sampler, int samplesPerSide, double seconds, double cpuSeconds, RayStats stats, double meanSamplesPerPixel,
+                  double estimatedRmse, double estimatedRmseLow, double estimatedRmseHigh, double probeSamplesPerPixel,
+                  Film film) {
         this.sampler = sampler;
         this.samplesPerSide = samplesPerSide;
         this.seconds = seconds;
+        this.cpuSeconds = cpuSeconds;
         this.stats = stats;
         this.meanSamplesPerPixel = meanSamplesPerPixel;
         this.estimatedRmse = estimatedRmse;

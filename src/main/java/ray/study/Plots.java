@@ -13,6 +13,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import javax.imageio.ImageIO;
+import org.knowm.xchart.AnnotationText;
 import org.knowm.xchart.BitmapEncoder;
 import org.knowm.xchart.XYChart;
 import org.knowm.xchart.XYChartBuilder;
@@ -27,22 +28,33 @@ final class Plots {
     private Plots() {
     }
 
-    /** RMSE against median wall time on log-log axes, one curve per sampler (the MaxDepth rows apart). */
+    /**
+     * RMSE (8-bit steps) against median CPU time on log-log axes, one curve per sampler (the MaxDepth rows
+     * apart), each point labelled with its setting; every power of ten and the 2 and 5 between them are
+     * labelled on both axes, with lines at one step and at PSNR 40 dB.
+     */
     static void errorVersusTime(SceneStudy.Outcome o, ReportFolder dir, String png) throws IOException {
-        XYChart c = new XYChartBuilder().width(760).height(480).title(o.name() + ": error against time")
-                .xAxisTitle("wall time (s, median of repeats)").yAxisTitle("RMSE (fraction of [0, 1])").build();
+        boolean cpu = o.rows().stream().noneMatch(r -> Double.isNaN(r.cpuMedian()));
+        XYChart c = new XYChartBuilder().width(860).height(540).title(o.name() + ": error against time")
+                .xAxisTitle(cpu ? "CPU time (s, median of repeats; all threads)" : "wall time (s, median of repeats)")
+                .yAxisTitle("RMSE (8-bit steps)").build();
         c.getStyler().setXAxisLogarithmic(true).setYAxisLogarithmic(true).setLegendPosition(Styler.LegendPosition.OutsideE)
                 .setChartBackgroundColor(Color.WHITE).setMarkerSize(7);
+        c.getStyler().setXAxisLogarithmicDecadeOnly(false).setYAxisLogarithmicDecadeOnly(false);
+        c.setCustomXAxisTickLabelsFormatter(Plots::oneTwoFive);
+        c.setCustomYAxisTickLabelsFormatter(Plots::oneTwoFive);
+        c.getStyler().setAnnotationTextFont(new Font(Font.SANS_SERIF, Font.PLAIN, 9)).setAnnotationTextFontColor(Color.DARK_GRAY);
         Map<String, List<Row>> curves = new LinkedHashMap<>();
         for (Row r : o.rows()) {
             String key = isDepthRow(r, o) ? "MaxDepth (grid n_s=" + r.setting().ns() + ")" : r.setting().sampler();
             curves.computeIfAbsent(key, k -> new ArrayList<>()).add(r);
         }
         boolean any = false;
+        double lo = Double.POSITIVE_INFINITY, hi = 0;
         for (Map.Entry<String, List<Row>> e : curves.entrySet()) {
             List<Row> rs = new ArrayList<>();
             for (Row r : e.getValue()) {
-                if (r.error().rmse > 0 && r.secondsMedian() > 0) {
+                if (r.error().rmse > 0 && r.cost() > 0) {
                     rs.add(r);
                 }
             }
@@ -50,20 +62,50 @@ final class Plots {
                 continue;
             }
             // in setting order (more samples, or a deeper MaxDepth, along each curve), not by time, which is noisy
-            XYSeries s = c.addSeries(e.getKey(), rs.stream().mapToDouble(Row::secondsMedian).toArray(),
-                    rs.stream().mapToDouble(r -> r.error().rmse).toArray());
+            XYSeries s = c.addSeries(e.getKey(), rs.stream().mapToDouble(Row::cost).toArray(),
+                    rs.stream().mapToDouble(Row::rmseSteps).toArray());
             s.setMarker(SeriesMarkers.CIRCLE);
+            for (Row r : rs) {
+                // the setting's name just right of its point (x 1.12 on the log axis)
+                c.addAnnotation(new AnnotationText(shortLabel(r), r.cost() * 1.12, r.rmseSteps(), false));
+                lo = Math.min(lo, r.cost());
+                hi = Math.max(hi, r.cost());
+            }
             any = true;
         }
-        double step = ImageError.STEP;
-        XYSeries line = c.addSeries("one 8-bit step", new double[] {minTime(o), maxTime(o)}, new double[] {step, step});
+        if (!any) {
+            write(note(o.name() + ": every setting matches the reference exactly"), dir, png);
+            return;
+        }
+        double[] xs = {lo / 1.5, hi * 1.5};
+        XYSeries line = c.addSeries("one 8-bit step", xs, new double[] {1, 1});
         line.setMarker(SeriesMarkers.NONE).setLineColor(Color.GRAY)
                 .setLineStyle(new BasicStroke(1f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, new float[] {4f, 4f}, 0f));
-        if (any) {
-            write(BitmapEncoder.getBufferedImage(c), dir, png);
-        } else {
-            write(note(o.name() + ": every setting matches the reference exactly"), dir, png);
+        double psnr40 = Math.pow(10, -Report.TARGET_PSNR_DB / 20) / ImageError.STEP;
+        XYSeries target = c.addSeries("PSNR 40 dB (" + String.format(java.util.Locale.ROOT, "%.2f", psnr40) + " steps)", xs,
+                new double[] {psnr40, psnr40});
+        target.setMarker(SeriesMarkers.NONE).setLineColor(new Color(0xb00020))
+                .setLineStyle(new BasicStroke(1f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, new float[] {8f, 4f}, 0f));
+        write(BitmapEncoder.getBufferedImage(c), dir, png);
+    }
+
+    /**
+     * A log axis's tick label: 1, 2 and 5 times a power of ten are written (0.02, 0.05, 0.1, 0.2 ...), the
+     * ticks between them left blank, so every decade is labelled without the labels running together.
+     */
+    static String oneTwoFive(Double v) {
+        if (v == null || !(v > 0)) {
+            return "";
         }
+        double e = Math.floor(Math.log10(v) + 1e-9), m = v / Math.pow(10, e);
+        boolean shown = Math.abs(m - 1) < 1e-6 || Math.abs(m - 2) < 1e-6 || Math.abs(m - 5) < 1e-6 || Math.abs(m - 10) < 1e-5;
+        return shown ? new java.math.BigDecimal(v).round(new java.math.MathContext(1)).stripTrailingZeros().toPlainString() : "";
+    }
+
+    /** {@code 4} for n_s=4, {@code t=0.5} for target=0.5, {@code d=3} for MaxDepth=3: short enough to sit beside a point. */
+    static String shortLabel(Row r) {
+        String l = r.setting().label();
+        return l.replace("n_s=", "").replace("target=", "t=").replace("MaxDepth=", "d=");
     }
 
     /** The adaptive sampler's own error estimate against its true RMSE, all scenes in one plot. */
@@ -75,6 +117,9 @@ final class Plots {
         c.getStyler().setXAxisLogarithmic(true).setYAxisLogarithmic(true).setLegendPosition(Styler.LegendPosition.OutsideE)
                 .setChartBackgroundColor(Color.WHITE).setMarkerSize(7);
         c.getStyler().setDefaultSeriesRenderStyle(XYSeries.XYSeriesRenderStyle.Scatter);
+        c.getStyler().setXAxisLogarithmicDecadeOnly(false).setYAxisLogarithmicDecadeOnly(false);
+        c.setCustomXAxisTickLabelsFormatter(Plots::oneTwoFive);
+        c.setCustomYAxisTickLabelsFormatter(Plots::oneTwoFive);
         double lo = Double.POSITIVE_INFINITY, hi = 0;
         boolean any = false;
         for (SceneStudy.Outcome o : outcomes) {
@@ -193,14 +238,6 @@ final class Plots {
 
     static boolean isDepthRow(Row r, SceneStudy.Outcome o) {
         return r.setting().label().startsWith("MaxDepth=");
-    }
-
-    private static double minTime(SceneStudy.Outcome o) {
-        return o.rows().stream().mapToDouble(Row::secondsMedian).filter(t -> t > 0).min().orElse(1e-3);
-    }
-
-    private static double maxTime(SceneStudy.Outcome o) {
-        return o.rows().stream().mapToDouble(Row::secondsMedian).max().orElse(1);
     }
 
     private static BufferedImage note(String text) {

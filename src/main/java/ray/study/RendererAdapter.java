@@ -23,11 +23,11 @@ final class RendererAdapter implements StudyRenderer {
 
     @Override
     public Result render(Scene scene, Setting s) {
-        Renderer r = new Renderer(scene).settings(s.renderSettings()).threads(threads);
+        Renderer r = new Renderer(scene).settings(s.renderSettings()).threads(threads).measureCpu(true);
         Image image = r.render();
         RenderSummary sum = r.summary();
         boolean adaptive = r.resolvedSettings().adaptive();
-        return new Result(image, sum.seconds, sum.stats, sum.meanSamplesPerPixel, adaptive
-                ? new Estimate(sum.estimatedRmse, sum.estimatedRmseLow, sum.estimatedRmseHigh, sum.probeSamplesPerPixel) : Estimate.NONE);
+        return new Result(image, sum.seconds, sum.cpuSeconds, sum.stats, sum.meanSamplesPerPixel, adaptive
+                ? new Estimate(sum.estimatedRmse, sum.estimatedRmseLow, sum.estimatedRmseHigh, sum.probeSamplesPerPixel) : Estimate.NONE, "");
     }
 }

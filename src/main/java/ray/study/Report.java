@@ -39,15 +39,106 @@ final class Report {
         return m;
     }
 
-    /** The fastest row (median time) of {@code rows} with an RMSE at most {@code rmse}, or null. */
+    /**
+     * The cheapest row of {@code rows} with an RMSE at most {@code rmse}, or null. Times are noisy, so a
+     * row is only faster than another when their ranges over the repeats ({@link Row#costLow()} to
+     * {@link Row#costHigh()}) do not overlap: among the rows whose range overlaps the fastest one's, the one
+     * with the fewest samples per pixel wins (a tie goes to the cheaper setting), then the lower median.
+     */
     static Row cheapest(List<Row> rows, double rmse) {
-        Row best = null;
+        Row fastest = null;
         for (Row r : rows) {
-            if (r.error().rmse <= rmse && (best == null || r.secondsMedian() < best.secondsMedian())) {
+            if (r.error().rmse <= rmse && (fastest == null || r.cost() < fastest.cost())) {
+                fastest = r;
+            }
+        }
+        if (fastest == null) {
+            return null;
+        }
+        Row best = fastest;
+        for (Row r : rows) {
+            if (r.error().rmse <= rmse && r.costLow() <= fastest.costHigh()
+                    && (r.meanSpp() < best.meanSpp() || r.meanSpp() == best.meanSpp() && r.cost() < best.cost())) {
                 best = r;
             }
         }
         return best;
+    }
+
+    /** The machines the study's renders ran on, in order of first use ({@code ""}: this process). */
+    static List<String> machines(List<SceneStudy.Outcome> outcomes) {
+        List<String> out = new ArrayList<>();
+        for (SceneStudy.Outcome o : outcomes) {
+            for (String m : o.machines()) {
+                if (!out.contains(m)) {
+                    out.add(m);
+                }
+            }
+        }
+        return out;
+    }
+
+    /** {@code 2.1 s CPU (1.1 s wall)}, or the wall time alone where no CPU time was measured. */
+    static String time(Row r) {
+        return Double.isNaN(r.cpuMedian()) ? seconds(r.secondsMedian()) + " s"
+                : seconds(r.cpuMedian()) + " s CPU, " + seconds(r.secondsMedian()) + " s wall";
+    }
+
+    /**
+     * Over all scenes: the sampler setting that reaches {@link #TARGET_PSNR_DB} in the most scenes, and
+     * among those (within the timing noise of one another's total) the cheapest in samples; with the
+     * grid setting that does as well, for comparison. Null with fewer than one scene.
+     */
+    static String recommendation(List<SceneStudy.Outcome> outcomes) {
+        double rmse = Math.pow(10, -TARGET_PSNR_DB / 20);
+        Map<String, double[]> tally = new LinkedHashMap<>();      // key -> reached, total cost, total spp, total cost range width
+        for (SceneStudy.Outcome o : outcomes) {
+            for (Map.Entry<String, List<Row>> e : bySampler(o).entrySet()) {
+                for (Row r : e.getValue()) {
+                    double[] t = tally.computeIfAbsent(e.getKey() + " " + r.setting().label(), k -> new double[4]);
+                    t[0] += r.error().rmse <= rmse ? 1 : 0;
+                    t[1] += r.cost();
+                    t[2] += r.meanSpp();
+                    t[3] += r.costHigh() - r.costLow();
+                }
+            }
+        }
+        if (tally.isEmpty()) {
+            return null;
+        }
+        double most = tally.values().stream().mapToDouble(t -> t[0]).max().orElse(0);
+        String best = null, bestGrid = null;
+        for (Map.Entry<String, double[]> e : tally.entrySet()) {
+            double[] t = e.getValue();
+            if (t[0] < most) {
+                continue;
+            }
+            if (best == null || better(t, tally.get(best))) {
+                best = e.getKey();
+            }
+            if (e.getKey().startsWith("grid ") && (bestGrid == null || better(t, tally.get(bestGrid)))) {
+                bestGrid = e.getKey();
+            }
+        }
+        double[] b = tally.get(best);
+        String s = String.format(Locale.ROOT, "For scenes like these, use %s: it reaches PSNR %.0f dB in %d of %d scenes (no setting "
+                + "studied does in more) for %s s of CPU time over all of them.", best.replace(" ", " with "), TARGET_PSNR_DB, (int) b[0],
+                outcomes.size(), seconds(b[1]));
+        if (bestGrid != null && !bestGrid.equals(best)) {
+            double[] g = tally.get(bestGrid);
+            s += String.format(Locale.ROOT, " The cheapest grid setting that does as well, %s, takes %s s (%.2fx).", bestGrid.replace(" ", " with "),
+                    seconds(g[1]), g[1] / b[1]);
+        }
+        return s;
+    }
+
+    /** Cheaper over all scenes: a lower total cost beyond the two totals' noise, else fewer samples. */
+    private static boolean better(double[] a, double[] b) {
+        double noise = a[3] + b[3];
+        if (Math.abs(a[1] - b[1]) > noise) {
+            return a[1] < b[1];
+        }
+        return a[2] < b[2] || a[2] == b[2] && a[1] < b[1];
     }
 
     /** "to reach PSNR 40 dB: grid needs n_s=5 (2.1 s); adaptive needs 0.6 s (target=1)". */
@@ -59,7 +150,7 @@ final class Report {
             if (r == null) {
                 parts.add(e.getKey() + " does not reach it in the settings studied");
             } else {
-                parts.add(e.getKey() + " needs " + r.setting().label() + String.format(Locale.ROOT, " (%s s)", seconds(r.secondsMedian())));
+                parts.add(e.getKey() + " needs " + r.setting().label() + " (" + time(r) + ")");
             }
         }
         return String.format(Locale.ROOT, "To reach PSNR %.0f dB: ", psnrDb) + String.join("; ", parts) + ".";
@@ -75,11 +166,10 @@ final class Report {
         // 1% over counts as reaching it: adaptive with the n_s = 4 budget converges to that very image
         Row a = cheapest(m.get("adaptive"), grid4.error().rmse * 1.01);
         if (a == null) {
-            return String.format(Locale.ROOT, "Adaptive does not reach the 4x4 grid's RMSE (%.3g) at the targets studied.", grid4.error().rmse);
+            return String.format(Locale.ROOT, "Adaptive does not reach the 4x4 grid's RMSE (%.2f steps) at the targets studied.", grid4.rmseSteps());
         }
-        return String.format(Locale.ROOT, "Adaptive reaches the 4x4 grid's RMSE (%.3g) with %s in %s s, %.2f of the grid's %s s (%.1f samples per pixel on average).",
-                grid4.error().rmse, a.setting().label(), seconds(a.secondsMedian()), a.secondsMedian() / grid4.secondsMedian(),
-                seconds(grid4.secondsMedian()), a.meanSpp());
+        return String.format(Locale.ROOT, "Adaptive reaches the 4x4 grid's RMSE (%.2f steps) with %s in %s, %.2f of the grid's %s (%.1f samples per pixel on average).",
+                grid4.rmseSteps(), a.setting().label(), time(a), a.cost() / grid4.cost(), time(grid4), a.meanSpp());
     }
 
     /** Which sampler has the lowest RMSE at n_s = {@code ns} (equal samples per pixel). */
@@ -90,7 +180,7 @@ final class Report {
         for (Map.Entry<String, List<Row>> e : bySampler(o).entrySet()) {
             Row r = find(e.getValue(), "n_s=" + ns);
             if (r != null) {
-                parts.add(String.format(Locale.ROOT, "%s %.3g", e.getKey(), r.error().rmse));
+                parts.add(String.format(Locale.ROOT, "%s %.2f", e.getKey(), r.rmseSteps()));
                 if (r.error().rmse < bestRmse) {
                     bestRmse = r.error().rmse;
                     best = e.getKey();
@@ -100,7 +190,7 @@ final class Report {
         if (parts.size() < 2) {
             return null;
         }
-        return String.format(Locale.ROOT, "At %d samples per pixel the RMSE is %s: %s wins.", ns * ns, String.join(", ", parts), best);
+        return String.format(Locale.ROOT, "At %d samples per pixel the RMSE (8-bit steps) is %s: %s wins.", ns * ns, String.join(", ", parts), best);
     }
 
     /**
@@ -184,21 +274,50 @@ final class Report {
     }
 
     static String seconds(double s) {
+        if (Double.isNaN(s)) {
+            return "-";
+        }
         return s >= 10 ? String.format(Locale.ROOT, "%.1f", s) : s >= 0.1 ? String.format(Locale.ROOT, "%.2f", s)
                 : String.format(Locale.ROOT, "%.3f", s);
     }
 
-    static void html(List<SceneStudy.Outcome> outcomes, boolean honesty, String mode, double totalSeconds, ReportFolder dir, String file) throws IOException {
+    static void html(List<SceneStudy.Outcome> outcomes, boolean honesty, String mode, double totalSeconds, int repeats, ReportFolder dir, String file) throws IOException {
         StringBuilder b = new StringBuilder();
         b.append("<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Accuracy against time</title>\n")
                 .append("<style>body{font-family:sans-serif;max-width:1100px;margin:2em auto;padding:0 1em}")
+                .append(".wide{overflow-x:auto;max-width:100%}")
                 .append("table{border-collapse:collapse;font-size:90%}td,th{border:1px solid #ccc;padding:2px 6px;text-align:right}")
                 .append("th{background:#f4f4f4}td:first-child,td:nth-child(2){text-align:left}img{max-width:100%}")
                 .append("h2{margin-top:2em;border-top:1px solid #ddd;padding-top:1em}</style></head><body>\n")
                 .append("<h1>What accuracy costs in time</h1>\n<p>Each scene was rendered with every sampler at every setting (")
-                .append(esc(mode)).append("), timed in one process after a warm-up render (median and range of the repeats), and ")
-                .append("compared with a converged reference on the clamped linear image. Errors are in units of the [0, 1] range; ")
-                .append("one 8-bit step is 1/255 = 0.00392. Study time: ").append(seconds(totalSeconds)).append(" s.</p>\n");
+                .append(esc(mode)).append("), timed after a warm-up render, and compared with a converged reference on the clamped ")
+                .append("linear image. Each render's CPU time is read from the clocks of the threads that rendered it (other work on the ")
+                .append("machine, or in the same JVM, does not count), its wall time beside it. Every setting is rendered ").append(repeats)
+                .append(" times; a setting whose CPU times still spread widely (the middle half of them wider than a tenth of their ")
+                .append("median, or 3 ms) is rendered again, ").append(repeats).append(" more at a time, up to ").append(SceneStudy.MAX_REPEATS)
+                .append(" times as often; the tables give the repeats, the median and the middle half (quartiles). Settings are judged ")
+                .append("by CPU time: one counts as faster than another only when their middle halves do not overlap, and a tie goes to ")
+                .append("the setting with fewer samples per pixel. Errors are in 8-bit steps (1/255 of the [0, 1] range, the unit of ")
+                .append("--target-error and of the PNG); the CSVs also keep the [0, 1] fractions. Study time: ")
+                .append(seconds(totalSeconds)).append(" s.</p>\n");
+        List<String> machines = machines(outcomes);
+        if (machines.size() > 1) {
+            b.append("<p><b>Times from different machines.</b> The renders ran on ").append(machines.size()).append(" machines (")
+                    .append(esc(String.join(", ", machines))).append("); each time was measured inside its render on the machine that ")
+                    .append("ran it, so a setting's repeats may come from different machines, and settings compare only as far as those ")
+                    .append("machines are alike.</p>\n");
+        }
+        b.append("<p><b>Why 40 dB.</b> The report asks what each sampler needs to reach PSNR 40 dB: an RMSE of 1% of the range, ")
+                .append(String.format(Locale.ROOT, "%.2f", Math.pow(10, -TARGET_PSNR_DB / 20) / ImageError.STEP))
+                .append(" 8-bit steps. Image-quality practice reads differences above 40 dB as hard to see (lossy codecs at high quality ")
+                .append("land at 40-50 dB); below it, noise shows in smooth areas. So 40 dB is a fair bar for a finished render in a ")
+                .append("course or a preview; a render compared pixel by pixel with a reference (the grader, the viewer's difference) ")
+                .append("needs more, and for that the report gives the 4 x 4 grid's error beside it and draws the one-step line in ")
+                .append("the plots.</p>\n");
+        String rec = recommendation(outcomes);
+        if (rec != null) {
+            b.append("<p><b>Recommendation.</b> ").append(esc(rec)).append("</p>\n");
+        }
         b.append("<h2>Summary</h2>\n<table><tr><th>scene</th><th>PSNR 40 dB</th><th>adaptive vs 4x4 grid</th>")
                 .append("<th>estimate / true RMSE</th><th>reference n_s, noise, change (steps)</th></tr>\n");
         for (SceneStudy.Outcome o : outcomes) {
@@ -239,19 +358,20 @@ final class Report {
                     .append("<img src=\"").append(n).append("-error-vs-time.png\" alt=\"error against time\">\n")
                     .append("<p>The region where the 1-sample grid errs most, at each grid setting and in the reference:</p>\n")
                     .append("<img src=\"").append(n).append("-crops.png\" alt=\"worst region\">\n")
-                    .append("<p><a href=\"").append(n).append(".csv\">").append(n).append(".csv</a></p>\n<table><tr>");
-            for (String h : Row.HEADER.split(",")) {
-                b.append("<th>").append(h).append("</th>");
-            }
-            b.append("</tr>\n");
+                    .append("<p><a href=\"").append(n).append(".csv\">").append(n).append(".csv</a> (every column); here in 8-bit steps:</p>\n")
+                    .append("<div class=\"wide\"><table><tr><th>sampler</th><th>setting</th><th>spp</th><th>CPU s (middle half)</th>")
+                    .append("<th>wall s (range)</th><th>repeats</th><th>RMSE</th><th>PSNR dB</th><th>max error</th><th>pixels off &gt; 1 step</th>")
+                    .append("<th>estimate</th></tr>\n");
             for (Row r : o.rows()) {
-                b.append("<tr>");
-                for (String cell : r.csv().split(",(?=(?:[^\"]*\"[^\"]*\")*[^\"]*$)")) {
-                    b.append("<td>").append(esc(cell.replace("\"", ""))).append("</td>");
-                }
-                b.append("</tr>\n");
+                b.append(String.format(Locale.ROOT, "<tr><td>%s</td><td>%s</td><td>%.1f</td><td>%s (%s-%s)</td><td>%s (%s-%s)</td><td>%d</td>"
+                        + "<td>%.3f</td><td>%s</td><td>%.1f</td><td>%.1f%%</td><td>%s</td></tr>%n", esc(r.setting().sampler()),
+                        esc(r.setting().label()), r.meanSpp(), seconds(r.cpuMedian()), seconds(r.cpuQ1()), seconds(r.cpuQ3()),
+                        seconds(r.secondsMedian()), seconds(r.secondsMin()), seconds(r.secondsMax()), r.repeats(), r.rmseSteps(),
+                        Double.isInfinite(r.error().psnrDb) ? "inf" : String.format(Locale.ROOT, "%.1f", r.error().psnrDb),
+                        r.error().maxError / ImageError.STEP, 100 * r.error().shareOffByMoreThanOneStep,
+                        Double.isNaN(r.estimatedRmseSteps()) ? "" : String.format(Locale.ROOT, "%.3f", r.estimatedRmseSteps())));
             }
-            b.append("</table>\n");
+            b.append("</table></div>\n");
         }
         b.append("</body></html>\n");
         dir.write(file, b.toString().getBytes(StandardCharsets.UTF_8));

@@ -143,7 +143,7 @@ public final class Study {
             SceneStudy.Outcome o;
             try {
                 renderer.studying(parsed.get(i), scenes.get(i));
-                o = study.run(name, scenes.get(i), sizes.get(i)[0], sizes.get(i)[1], bar::advance);
+                o = study.run(name, scenes.get(i), sizes.get(i)[0], sizes.get(i)[1], bar);
             } catch (OutOfMemoryError e) {
                 bar.clear();
                 err.println(shown + ": out of memory while rendering (raise the heap, e.g. JAVA_OPTS=-Xmx16g)");
@@ -182,7 +182,7 @@ public final class Study {
             failed++;
         }
         try {
-            Report.html(outcomes, honesty, mode, (System.nanoTime() - t0) / 1e9, folder, "index.html");
+            Report.html(outcomes, honesty, mode, (System.nanoTime() - t0) / 1e9, repeats, folder, "index.html");
         } catch (IOException e) {
             err.println(Failures.oneLine(e.getMessage()));
             return 1;
@@ -190,14 +190,18 @@ public final class Study {
         for (SceneStudy.Outcome o : outcomes) {
             out.println(Failures.oneLine(o.name() + ": " + Report.psnrSentence(o, Report.TARGET_PSNR_DB)));
         }
+        String rec = Report.recommendation(outcomes);
+        if (rec != null && outcomes.size() > 1) {
+            out.println(Failures.oneLine(rec));
+        }
         out.println(Failures.oneLine(String.format(Locale.ROOT, "study of %d scene(s) in %.1f s: %s", outcomes.size(),
                 (System.nanoTime() - t0) / 1e9, outDir.resolve("index.html"))));
         return failed == 0 ? 0 : 1;
     }
 
     /** A progress bar on stderr by work (samples x pixels), with the time left; drawn only on a terminal. */
-    private final class Bar {
-        private final double total;
+    private final class Bar implements SceneStudy.Tick {
+        private double total;
         private final long start = System.nanoTime();
         private double done;
         private long lastDraw;
@@ -208,7 +212,13 @@ public final class Study {
             this.total = Math.max(1, total);
         }
 
-        void advance(double work) {
+        @Override
+        public void added(double work) {
+            total += work;
+        }
+
+        @Override
+        public void rendered(double work) {
             done += work;
             long now = System.nanoTime();
             if (!progress || now - lastDraw < 200_000_000L) {
@@ -219,8 +229,12 @@ public final class Study {
             int filled = (int) Math.round(30 * f);
             String s = String.format(Locale.ROOT, "study [%s%s] %3.0f%%  %s  %s left", "#".repeat(filled), ".".repeat(30 - filled),
                     100 * f, label, f > 0.02 ? Report.seconds(elapsed / f - elapsed) + " s" : "?");
-            width = Math.max(width, s.length());
-            err.print("\r" + s + " ".repeat(width - s.length()));
+            int columns = Math.max(1, ray.app.TerminalWidth.columns() - 1);    // never wrap: a wrapped line cannot be erased
+            if (s.length() > columns) {
+                s = s.substring(0, columns);
+            }
+            width = Math.min(columns, Math.max(width, s.length()));
+            err.print("\r" + s + " ".repeat(Math.max(0, width - s.length())));
             err.flush();
         }
 

@@ -7,8 +7,18 @@ import ray.render.Image;
 /** Renders a scene at one {@link Setting}; the study's only way into the renderer. */
 public interface StudyRenderer {
 
-    /** What one render produced; {@code estimate} is {@link Estimate#NONE} where the sampler makes none. */
-    record Result(Image image, double seconds, RayStats rays, double meanSpp, Estimate estimate) {
+    /**
+     * What one render produced; {@code estimate} is {@link Estimate#NONE} where the sampler makes none.
+     * {@code seconds} is its wall time and {@code cpuSeconds} its CPU time (NaN where not measured), both
+     * measured where it ran; {@code machine} names the machine it ran on ({@code ""}: this process), so
+     * the report can say when times come from different machines.
+     */
+    record Result(Image image, double seconds, double cpuSeconds, RayStats rays, double meanSpp, Estimate estimate, String machine) {
+
+        /** A render in this process without a CPU time. */
+        public Result(Image image, double seconds, RayStats rays, double meanSpp, Estimate estimate) {
+            this(image, seconds, Double.NaN, rays, meanSpp, estimate, "");
+        }
     }
 
     /**
@@ -26,7 +36,9 @@ public interface StudyRenderer {
 
     /**
      * Renders each of {@code settings} in turn and returns the results in order. A renderer that runs
-     * renders elsewhere (raytracer-spark: one task each) renders them all at once.
+     * renders elsewhere (raytracer-spark: one task each) renders them all at once. The study calls it
+     * once per scene for every (setting, repeat), then again, in smaller batches, for the settings whose
+     * times still spread widely ({@link SceneStudy}); a setting may appear several times in a batch.
      */
     default java.util.List<Result> renderAll(Scene scene, java.util.List<Setting> settings) {
         java.util.List<Result> out = new java.util.ArrayList<>();

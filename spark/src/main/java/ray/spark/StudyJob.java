@@ -23,8 +23,9 @@ import ray.study.StudySettings;
 /**
  * {@code raytracer-spark --study}: {@code raytracer --study} (ray.study: the same settings, reference,
  * errors, CSVs, plots and index.html) with its renders run as Spark tasks: each scene's (setting, repeat)
- * renders as the tasks of one job, each timed inside its task on the executor that ran it; the warm-up
- * one task; the reference's renders (images only, no times) in tiles.
+ * renders as the tasks of one job, then the repeats of the settings whose times still spread widely as
+ * further jobs; each render's CPU and wall time measured inside its task on the executor that ran it,
+ * with that executor's host; the warm-up one task; the reference's renders (images only, no times) in tiles.
  */
 final class StudyJob {
 
@@ -47,9 +48,10 @@ final class StudyJob {
         }
         String mode = (quick ? "quick settings" : "full settings")
                 + (fullSize ? ", every scene at its own size" : ", scenes over " + StudySettings.MAX_PIXELS + " pixels scaled down to that many")
-                + "; rendered by raytracer-spark on " + jsc.master() + ": each render's wall time was measured inside its Spark task on the "
-                + "executor that ran it (" + threads + " render thread(s) a task), so the times come from different machines and compare "
-                + "only as far as the cluster's machines are alike";
+                + "; rendered by raytracer-spark on " + jsc.master() + ": each render's CPU and wall time was measured inside its Spark "
+                + "task on the executor that ran it (" + threads + " render thread(s) a task; CPU time from those threads' own clocks, so "
+                + "tasks sharing an executor do not count each other's), so on a cluster the times come from different machines and "
+                + "compare only as far as its machines are alike";
         try {
             return s.run(scenes, dir, mode);
         } finally {
@@ -69,11 +71,11 @@ final class StudyJob {
     }
 
     /** What a task sends back: the result's parts (the study's records are not serializable), and where it ran. */
-    record Rendered(Image image, double seconds, RayStats rays, double meanSpp, double rmse, double low, double high, double probeSpp,
-                    boolean estimated, String failure) implements Serializable {
+    record Rendered(Image image, double seconds, double cpuSeconds, RayStats rays, double meanSpp, double rmse, double low, double high,
+                    double probeSpp, boolean estimated, String machine, String failure) implements Serializable {
         StudyRenderer.Result result() {
-            return new StudyRenderer.Result(image, seconds, rays, meanSpp, estimated
-                    ? new StudyRenderer.Estimate(rmse, low, high, probeSpp) : StudyRenderer.Estimate.NONE);
+            return new StudyRenderer.Result(image, seconds, cpuSeconds, rays, meanSpp, estimated
+                    ? new StudyRenderer.Estimate(rmse, low, high, probeSpp) : StudyRenderer.Estimate.NONE, machine);
         }
     }
 
@@ -105,14 +107,20 @@ final class StudyJob {
                 }
                 StudyRenderer.Result res = local.render(b.parse(), r.setting());
                 StudyRenderer.Estimate e = res.estimate();
-                return new Rendered(res.image(), res.seconds(), res.rays(), res.meanSpp(), e.rmseSteps(), e.lowSteps(), e.highSteps(),
-                        e.samplesPerPixel(), e != StudyRenderer.Estimate.NONE, null);
+                return new Rendered(res.image(), res.seconds(), res.cpuSeconds(), res.rays(), res.meanSpp(), e.rmseSteps(), e.lowSteps(),
+                        e.highSteps(), e.samplesPerPixel(), e != StudyRenderer.Estimate.NONE, machine(), null);
             } catch (OutOfMemoryError e) {
                 throw e;
             } catch (Throwable e) {   // a user's class: the same on any retry
-                return new Rendered(null, 0, null, 0, 0, 0, 0, 0, false, ray.app.RenderReport.failure(e));
+                return new Rendered(null, 0, 0, null, 0, 0, 0, 0, 0, false, "", ray.app.RenderReport.failure(e));
             }
         }
+    }
+
+    /** The host this task runs on (the block manager's: what Spark calls the executor's host), for the report. */
+    static String machine() {
+        org.apache.spark.SparkEnv env = org.apache.spark.SparkEnv.get();
+        return env == null ? "" : env.blockManager().blockManagerId().host();
     }
 
     /**
