@@ -13,7 +13,6 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import javax.imageio.ImageIO;
-import org.knowm.xchart.AnnotationText;
 import org.knowm.xchart.BitmapEncoder;
 import org.knowm.xchart.XYChart;
 import org.knowm.xchart.XYChartBuilder;
@@ -43,7 +42,8 @@ final class Plots {
         c.getStyler().setXAxisLogarithmicDecadeOnly(false).setYAxisLogarithmicDecadeOnly(false);
         c.setCustomXAxisTickLabelsFormatter(Plots::oneTwoFive);
         c.setCustomYAxisTickLabelsFormatter(Plots::oneTwoFive);
-        c.getStyler().setAnnotationTextFont(new Font(Font.SANS_SERIF, Font.PLAIN, 9)).setAnnotationTextFontColor(Color.DARK_GRAY);
+        PointLabels labels = new PointLabels(new Font(Font.SANS_SERIF, Font.PLAIN, 10), Color.DARK_GRAY);
+        double ylo = Double.POSITIVE_INFINITY, yhi = 0;
         Map<String, List<Row>> curves = new LinkedHashMap<>();
         for (Row r : o.rows()) {
             String key = isDepthRow(r, o) ? "MaxDepth (grid n_s=" + r.setting().ns() + ")" : r.setting().sampler();
@@ -66,10 +66,11 @@ final class Plots {
                     rs.stream().mapToDouble(Row::rmseSteps).toArray());
             s.setMarker(SeriesMarkers.CIRCLE);
             for (Row r : rs) {
-                // the setting's name just right of its point (x 1.12 on the log axis)
-                c.addAnnotation(new AnnotationText(shortLabel(r), r.cost() * 1.12, r.rmseSteps(), false));
+                labels.add(r.cost(), r.rmseSteps(), shortLabel(r), e.getKey());
                 lo = Math.min(lo, r.cost());
                 hi = Math.max(hi, r.cost());
+                ylo = Math.min(ylo, r.rmseSteps());
+                yhi = Math.max(yhi, r.rmseSteps());
             }
             any = true;
         }
@@ -77,16 +78,34 @@ final class Plots {
             write(note(o.name() + ": every setting matches the reference exactly"), dir, png);
             return;
         }
-        double[] xs = {lo / 1.5, hi * 1.5};
+        // both axes from a labelled value to a labelled value (1, 2 or 5 times a power of ten), so no end of an axis goes unnamed
+        double[] xs = {oneTwoFiveBelow(lo / 1.2), oneTwoFiveAbove(hi * 1.25)};
+        double psnr40 = Math.pow(10, -Report.TARGET_PSNR_DB / 20) / ImageError.STEP;
+        c.getStyler().setXAxisMin(xs[0]).setXAxisMax(xs[1]).setYAxisMin(oneTwoFiveBelow(Math.min(ylo / 1.1, 0.9)))
+                .setYAxisMax(oneTwoFiveAbove(Math.max(yhi * 1.1, psnr40 * 1.1)));
         XYSeries line = c.addSeries("one 8-bit step", xs, new double[] {1, 1});
         line.setMarker(SeriesMarkers.NONE).setLineColor(Color.GRAY)
                 .setLineStyle(new BasicStroke(1f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, new float[] {4f, 4f}, 0f));
-        double psnr40 = Math.pow(10, -Report.TARGET_PSNR_DB / 20) / ImageError.STEP;
         XYSeries target = c.addSeries("PSNR 40 dB (" + String.format(java.util.Locale.ROOT, "%.2f", psnr40) + " steps)", xs,
                 new double[] {psnr40, psnr40});
         target.setMarker(SeriesMarkers.NONE).setLineColor(new Color(0xb00020))
                 .setLineStyle(new BasicStroke(1f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, new float[] {8f, 4f}, 0f));
+        c.addAnnotation(labels);
         write(BitmapEncoder.getBufferedImage(c), dir, png);
+    }
+
+    /** The largest of 1, 2 and 5 times a power of ten at most {@code v} (v > 0). */
+    static double oneTwoFiveBelow(double v) {
+        double p = Math.pow(10, Math.floor(Math.log10(v)));
+        double m = v / p;
+        return (m >= 5 ? 5 : m >= 2 ? 2 : 1) * p;
+    }
+
+    /** The smallest of 1, 2 and 5 times a power of ten at least {@code v} (v > 0). */
+    static double oneTwoFiveAbove(double v) {
+        double p = Math.pow(10, Math.floor(Math.log10(v)));
+        double m = v / p;
+        return (m <= 1 + 1e-9 ? 1 : m <= 2 ? 2 : m <= 5 ? 5 : 10) * p;
     }
 
     /**
@@ -102,10 +121,16 @@ final class Plots {
         return shown ? new java.math.BigDecimal(v).round(new java.math.MathContext(1)).stripTrailingZeros().toPlainString() : "";
     }
 
-    /** {@code 4} for n_s=4, {@code t=0.5} for target=0.5, {@code d=3} for MaxDepth=3: short enough to sit beside a point. */
+    /**
+     * {@code 4} for n_s=4, {@code t=0.5} for target=0.5, {@code d=3} for MaxDepth=3 (its n_s is in the
+     * curve's name): short enough to sit beside a point.
+     */
     static String shortLabel(Row r) {
         String l = r.setting().label();
-        return l.replace("n_s=", "").replace("target=", "t=").replace("MaxDepth=", "d=");
+        if (l.startsWith("MaxDepth=")) {
+            return "d=" + r.setting().maxDepth();
+        }
+        return l.replace("n_s=", "").replace("target=", "t=");
     }
 
     /** The adaptive sampler's own error estimate against its true RMSE, all scenes in one plot. */
@@ -140,7 +165,8 @@ final class Plots {
         if (!any) {
             return false;
         }
-        double[] xs = {lo / 2, hi * 2};
+        double[] xs = {oneTwoFiveBelow(lo / 1.5), oneTwoFiveAbove(hi * 1.5)};
+        c.getStyler().setXAxisMin(xs[0]).setXAxisMax(xs[1]).setYAxisMin(oneTwoFiveBelow(xs[0] / 1.5)).setYAxisMax(oneTwoFiveAbove(xs[1] * 1.5));
         guide(c, "estimate = truth", xs, 1, new float[] {1f, 0f});
         guide(c, "x 1.5", xs, 1.5, new float[] {5f, 4f});
         guide(c, "/ 1.5", xs, 1 / 1.5, new float[] {5f, 4f});

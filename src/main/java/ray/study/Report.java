@@ -41,9 +41,10 @@ final class Report {
 
     /**
      * The cheapest row of {@code rows} with an RMSE at most {@code rmse}, or null. Times are noisy, so a
-     * row is only faster than another when their ranges over the repeats ({@link Row#costLow()} to
-     * {@link Row#costHigh()}) do not overlap: among the rows whose range overlaps the fastest one's, the one
-     * with the fewest samples per pixel wins (a tie goes to the cheaper setting), then the lower median.
+     * row is only faster than another when the middle halves of their times over the repeats
+     * ({@link Row#costLow()} to {@link Row#costHigh()}) do not overlap: among the rows whose middle half
+     * overlaps the fastest one's, the one with the fewest samples per pixel wins (a tie goes to the
+     * cheaper setting), then the lower median.
      */
     static Row cheapest(List<Row> rows, double rmse) {
         Row fastest = null;
@@ -107,6 +108,10 @@ final class Report {
             return null;
         }
         double most = tally.values().stream().mapToDouble(t -> t[0]).max().orElse(0);
+        if (most == 0) {
+            return String.format(Locale.ROOT, "No setting studied reaches PSNR %.0f dB in any of these scenes, so there is no "
+                    + "setting to recommend for it (the tables give each setting's error).", TARGET_PSNR_DB);
+        }
         String best = null, bestGrid = null;
         for (Map.Entry<String, double[]> e : tally.entrySet()) {
             double[] t = e.getValue();
@@ -168,8 +173,9 @@ final class Report {
         if (a == null) {
             return String.format(Locale.ROOT, "Adaptive does not reach the 4x4 grid's RMSE (%.2f steps) at the targets studied.", grid4.rmseSteps());
         }
-        return String.format(Locale.ROOT, "Adaptive reaches the 4x4 grid's RMSE (%.2f steps) with %s in %s, %.2f of the grid's %s (%.1f samples per pixel on average).",
-                grid4.rmseSteps(), a.setting().label(), time(a), a.cost() / grid4.cost(), time(grid4), a.meanSpp());
+        return String.format(Locale.ROOT, "Adaptive reaches the 4x4 grid's RMSE (%.2f steps) with %s in %s: %.2fx the grid's time (%s), "
+                + "with %.1f samples per pixel on average.", grid4.rmseSteps(), a.setting().label(), time(a), a.cost() / grid4.cost(), time(grid4),
+                a.meanSpp());
     }
 
     /** Which sampler has the lowest RMSE at n_s = {@code ns} (equal samples per pixel). */
@@ -285,7 +291,7 @@ final class Report {
         StringBuilder b = new StringBuilder();
         b.append("<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Accuracy against time</title>\n")
                 .append("<style>body{font-family:sans-serif;max-width:1100px;margin:2em auto;padding:0 1em}")
-                .append(".wide{overflow-x:auto;max-width:100%}")
+                .append(".wide{overflow-x:auto;max-width:100%}.wide td{white-space:nowrap}.text td{text-align:left;vertical-align:top}")
                 .append("table{border-collapse:collapse;font-size:90%}td,th{border:1px solid #ccc;padding:2px 6px;text-align:right}")
                 .append("th{background:#f4f4f4}td:first-child,td:nth-child(2){text-align:left}img{max-width:100%}")
                 .append("h2{margin-top:2em;border-top:1px solid #ddd;padding-top:1em}</style></head><body>\n")
@@ -318,7 +324,7 @@ final class Report {
         if (rec != null) {
             b.append("<p><b>Recommendation.</b> ").append(esc(rec)).append("</p>\n");
         }
-        b.append("<h2>Summary</h2>\n<table><tr><th>scene</th><th>PSNR 40 dB</th><th>adaptive vs 4x4 grid</th>")
+        b.append("<h2>Summary</h2>\n<table class=\"text\"><tr><th>scene</th><th>PSNR 40 dB</th><th>adaptive vs 4x4 grid</th>")
                 .append("<th>estimate / true RMSE</th><th>reference n_s, noise, change (steps)</th></tr>\n");
         for (SceneStudy.Outcome o : outcomes) {
             double[] h = honestyRange(o);
@@ -359,15 +365,15 @@ final class Report {
                     .append("<p>The region where the 1-sample grid errs most, at each grid setting and in the reference:</p>\n")
                     .append("<img src=\"").append(n).append("-crops.png\" alt=\"worst region\">\n")
                     .append("<p><a href=\"").append(n).append(".csv\">").append(n).append(".csv</a> (every column); here in 8-bit steps:</p>\n")
-                    .append("<div class=\"wide\"><table><tr><th>sampler</th><th>setting</th><th>spp</th><th>CPU s (middle half)</th>")
-                    .append("<th>wall s (range)</th><th>repeats</th><th>RMSE</th><th>PSNR dB</th><th>max error</th><th>pixels off &gt; 1 step</th>")
-                    .append("<th>estimate</th></tr>\n");
+                    .append("<div class=\"wide\"><table><tr><th>sampler</th><th>setting</th><th>spp</th><th>CPU s</th>")
+                    .append("<th>CPU middle half</th><th>wall s</th><th>wall range</th><th>repeats</th><th>RMSE</th><th>PSNR dB</th>")
+                    .append("<th>max error</th><th>pixels off &gt; 1 step</th><th>estimate</th></tr>\n");
             for (Row r : o.rows()) {
-                b.append(String.format(Locale.ROOT, "<tr><td>%s</td><td>%s</td><td>%.1f</td><td>%s (%s-%s)</td><td>%s (%s-%s)</td><td>%d</td>"
-                        + "<td>%.3f</td><td>%s</td><td>%.1f</td><td>%.1f%%</td><td>%s</td></tr>%n", esc(r.setting().sampler()),
-                        esc(r.setting().label()), r.meanSpp(), seconds(r.cpuMedian()), seconds(r.cpuQ1()), seconds(r.cpuQ3()),
-                        seconds(r.secondsMedian()), seconds(r.secondsMin()), seconds(r.secondsMax()), r.repeats(), r.rmseSteps(),
-                        Double.isInfinite(r.error().psnrDb) ? "inf" : String.format(Locale.ROOT, "%.1f", r.error().psnrDb),
+                b.append(String.format(Locale.ROOT, "<tr><td>%s</td><td>%s</td><td>%.1f</td><td>%s</td><td>%s&ndash;%s</td><td>%s</td>"
+                        + "<td>%s&ndash;%s</td><td>%d</td><td>%.3f</td><td>%s</td><td>%.1f</td><td>%.1f%%</td><td>%s</td></tr>%n",
+                        esc(r.setting().sampler()), esc(r.setting().label()), r.meanSpp(), seconds(r.cpuMedian()), seconds(r.cpuQ1()),
+                        seconds(r.cpuQ3()), seconds(r.secondsMedian()), seconds(r.secondsMin()), seconds(r.secondsMax()), r.repeats(),
+                        r.rmseSteps(), Double.isInfinite(r.error().psnrDb) ? "inf" : String.format(Locale.ROOT, "%.1f", r.error().psnrDb),
                         r.error().maxError / ImageError.STEP, 100 * r.error().shareOffByMoreThanOneStep,
                         Double.isNaN(r.estimatedRmseSteps()) ? "" : String.format(Locale.ROOT, "%.3f", r.estimatedRmseSteps())));
             }

@@ -72,8 +72,45 @@ class ReportChoiceTest {
     }
 
     @Test
+    void bothEndsOfEachAxisAreLabelledValues() {
+        assertEquals(0.02, Plots.oneTwoFiveBelow(0.031), 1e-12);
+        assertEquals(0.05, Plots.oneTwoFiveAbove(0.031), 1e-12);
+        assertEquals(50, Plots.oneTwoFiveAbove(47.2), 1e-9);
+        assertEquals(0.5, Plots.oneTwoFiveBelow(0.9), 1e-12);
+        assertEquals(1, Plots.oneTwoFiveAbove(1.0), 1e-12);
+        assertEquals(10, Plots.oneTwoFiveAbove(5.5), 1e-12);
+        for (double v : new double[] {0.0123, 0.7, 3.3, 47.2, 120}) {
+            assertEquals(false, Plots.oneTwoFive(Plots.oneTwoFiveBelow(v)).isEmpty(), v + " below");
+            assertEquals(false, Plots.oneTwoFive(Plots.oneTwoFiveAbove(v)).isEmpty(), v + " above");
+        }
+    }
+
+    @Test
+    void namesOfPointsOnOneSpotNeverOverlapAndOneCurvesShareAName() {
+        // material-glazed: the grid's n_s=4, adaptive's target=2 and target=1 on nearly one spot; MaxDepth 4 and 5 on one
+        List<PointLabels.Point> pts = List.of(new PointLabels.Point(0, 0, "4", "grid"), new PointLabels.Point(0, 0, "t=2", "adaptive"),
+                new PointLabels.Point(0, 0, "t=1", "adaptive"), new PointLabels.Point(0, 0, "d=3", "depth"),
+                new PointLabels.Point(0, 0, "d=4", "depth"), new PointLabels.Point(0, 0, "d=5", "depth"));
+        int[] sx = {300, 306, 309, 100, 140, 142}, sy = {200, 201, 201, 100, 100, 102};
+        List<PointLabels.Placed> placed = PointLabels.place(pts, sx, sy, new java.awt.geom.Rectangle2D.Double(0, 0, 600, 400),
+                t -> 6 * t.length(), 11);
+        assertEquals(List.of("4", "t=2,1", "d=3", "d=4,5"), placed.stream().map(PointLabels.Placed::text).toList());
+        for (int i = 0; i < placed.size(); i++) {
+            for (int j = i + 1; j < placed.size(); j++) {
+                assertTrue(!placed.get(i).box().intersects(placed.get(j).box()), placed.get(i) + " and " + placed.get(j));
+            }
+            for (int k = 0; k < sx.length; k++) {
+                assertTrue(!placed.get(i).box().contains(sx[k], sy[k]), placed.get(i) + " covers point " + k);
+            }
+        }
+    }
+
+    @Test
     void eachPointIsNamedBriefly() {
         assertEquals("4", Plots.shortLabel(row("grid", "n_s=4", 0, 16, 1, 1, 1)));
         assertEquals("t=0.5", Plots.shortLabel(row("target=0.5", 0, 16, 1, 1, 1)));
+        Row depth = new Row(new Setting("grid", "MaxDepth=3 n_s=4", 4, 0, 3), 1, 1, 1, 1, ImageError.of(new Image(1, 1), new Image(1, 1)),
+                StudyRenderer.Estimate.NONE, 16);
+        assertEquals("d=3", Plots.shortLabel(depth), "the n_s is in the curve's name");
     }
 }
