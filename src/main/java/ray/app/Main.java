@@ -296,7 +296,7 @@ public final class Main implements Callable<Integer> {
                 return 2;
             }
             return outputChecked(ray.study.Study.run(scenes, quick, fullSize, reportDir != null ? reportDir : Path.of("build", "reports", "accuracy"),
-                    threads, in, out, err, !this.quiet && err == System.err && Terminal.stderr()));
+                    threads, in, out, err, !this.quiet && err == System.err && Terminal.stderr(), TerminalWidth::columns));
         }
         if (scenes.isEmpty() || view) {
             return openViewer();

@@ -10,7 +10,7 @@ import java.util.concurrent.TimeUnit;
  * then again only after the terminal says it was resized (SIGWINCH, where the JVM lets us listen), so a
  * redraw costs nothing. Java has no call for it: a child {@code stty} is the portable way on Unix.
  */
-public final class TerminalWidth {
+final class TerminalWidth {
 
     private static volatile int cached = -1;
     private static volatile boolean listening;
@@ -19,7 +19,7 @@ public final class TerminalWidth {
     }
 
     /** The columns now (at least 1). */
-    public static int columns() {
+    static int columns() {
         int c = cached;
         if (c < 0) {
             listen();

@@ -27,6 +27,8 @@ public final class Study {
     private final PrintStream err;
     private final boolean progress;
     private int maxPixels = StudySettings.MAX_PIXELS;
+    /** The terminal's width in columns, asked at each redraw of the progress line (it may be resized). */
+    private java.util.function.IntSupplier columns = () -> 80;
     /** Where the scene {@code -} is read from. */
     private java.io.InputStream in = System.in;
 
@@ -44,12 +46,14 @@ public final class Study {
 
     /**
      * The study as the command line runs it: the built-in renderer on {@code threads} threads, 3 repeats,
-     * each scene at most {@link StudySettings#MAX_PIXELS} pixels unless {@code fullSize}.
+     * each scene at most {@link StudySettings#MAX_PIXELS} pixels unless {@code fullSize}; {@code columns}
+     * is the terminal's width, which the progress line never exceeds.
      */
     public static int run(List<Path> scenes, boolean quick, boolean fullSize, Path outDir, int threads, java.io.InputStream in,
-                          PrintStream out, PrintStream err, boolean progress) {
+                          PrintStream out, PrintStream err, boolean progress, java.util.function.IntSupplier columns) {
         Study s = new Study(new RendererAdapter(threads), quick ? StudySettings.QUICK : StudySettings.FULL, 3, out, err, progress);
         s.in = in;
+        s.columns = columns;
         if (fullSize) {
             s.maxPixels(Integer.MAX_VALUE);
         }
@@ -65,6 +69,12 @@ public final class Study {
     /** Where the scene {@code -} is read from (default: standard input). */
     public Study in(java.io.InputStream stream) {
         this.in = stream;
+        return this;
+    }
+
+    /** The terminal's width for the progress line (80 unless told), asked at each redraw. */
+    public Study columns(java.util.function.IntSupplier c) {
+        this.columns = c;
         return this;
     }
 
@@ -229,7 +239,7 @@ public final class Study {
             int filled = (int) Math.round(30 * f);
             String s = String.format(Locale.ROOT, "study [%s%s] %3.0f%%  %s  %s left", "#".repeat(filled), ".".repeat(30 - filled),
                     100 * f, label, f > 0.02 ? Report.seconds(elapsed / f - elapsed) + " s" : "?");
-            int columns = Math.max(1, ray.app.TerminalWidth.columns() - 1);    // never wrap: a wrapped line cannot be erased
+            int columns = Math.max(1, Study.this.columns.getAsInt() - 1);    // never wrap: a wrapped line cannot be erased
             if (s.length() > columns) {
                 s = s.substring(0, columns);
             }
