@@ -248,6 +248,12 @@ class SparkRenderTest {
             assertTrue(Files.size(dir.resolve("spark").resolve(f)) > 0, f);
         }
         assertTrue(Files.readString(dir.resolve("spark/index.html")).contains("different machines"), "the report says where the times come from");
+        // each render's CPU time was measured inside its task (the render threads' clocks), for every setting
+        List<String> csv = Files.readAllLines(dir.resolve("spark/tiny.csv"));
+        int cpu = List.of(csv.get(0).split(",")).indexOf("cpu_seconds_median");
+        for (String line : csv.subList(1, csv.size())) {
+            assertTrue(Double.parseDouble(line.split(",", -1)[cpu]) > 0, line);
+        }
     }
 
     @Test
@@ -262,7 +268,7 @@ class SparkRenderTest {
         assertEquals("raytracer-spark: standard input ('-') can be read only once", err.toString(StandardCharsets.UTF_8).strip());
     }
 
-    /** A study CSV without its time columns (any whose header names seconds or a speed). */
+    /** A study CSV without its time columns (any whose header names seconds or a speed, and the repeats, which follow the times). */
     static List<String> withoutTimes(Path csv) throws IOException {
         List<String> lines = Files.readAllLines(csv);
         String[] header = lines.get(0).split(",");
@@ -271,7 +277,8 @@ class SparkRenderTest {
             String[] f = line.split(",", -1);
             StringBuilder b = new StringBuilder();
             for (int i = 0; i < header.length; i++) {
-                if (!header[i].contains("second") && !header[i].contains("time") && !header[i].contains("speed")) {
+                if (!header[i].contains("second") && !header[i].contains("time") && !header[i].contains("speed")
+                        && !header[i].equals("repeats")) {   // how many renders were timed follows the times' spread
                     b.append(f[i]).append(',');
                 }
             }
