@@ -133,7 +133,10 @@ final class Plots {
         return l.replace("n_s=", "").replace("target=", "t=");
     }
 
-    /** The adaptive sampler's own error estimate against its true RMSE, all scenes in one plot. */
+    /** The honesty plot names its points (t=1 ...) up to this many; the per-scene tables name every one. */
+    static final int MAX_NAMED = 40;
+
+    /** The adaptive sampler's own error estimate against its true RMSE, all scenes in one plot, each point named up to {@link #MAX_NAMED}. */
     static boolean honesty(List<SceneStudy.Outcome> outcomes, ReportFolder dir, String png) throws IOException {
         // tall enough for a legend line per scene
         XYChart c = new XYChartBuilder().width(760).height(Math.max(520, 21 * outcomes.size() + 140))
@@ -147,12 +150,16 @@ final class Plots {
         c.setCustomYAxisTickLabelsFormatter(Plots::oneTwoFive);
         double lo = Double.POSITIVE_INFINITY, hi = 0;
         boolean any = false;
+        PointLabels labels = new PointLabels(new Font(Font.SANS_SERIF, Font.PLAIN, 10), Color.DARK_GRAY);
+        int named = 0;
         for (SceneStudy.Outcome o : outcomes) {
             List<double[]> pts = new ArrayList<>();
             for (Row r : o.rows()) {
                 double truth = o.ref().trueSteps(r.rmseSteps());
                 if (!Double.isNaN(r.estimatedRmseSteps()) && truth > 0 && r.estimatedRmseSteps() > 0) {
                     pts.add(new double[] {truth, r.estimatedRmseSteps()});
+                    labels.add(truth, r.estimatedRmseSteps(), shortLabel(r), o.name());
+                    named++;
                     lo = Math.min(lo, Math.min(truth, r.estimatedRmseSteps()));
                     hi = Math.max(hi, Math.max(truth, r.estimatedRmseSteps()));
                 }
@@ -170,6 +177,9 @@ final class Plots {
         guide(c, "estimate = truth", xs, 1, new float[] {1f, 0f});
         guide(c, "x 1.5", xs, 1.5, new float[] {5f, 4f});
         guide(c, "/ 1.5", xs, 1 / 1.5, new float[] {5f, 4f});
+        if (named <= MAX_NAMED) {       // beyond that the names would cover each other; each scene's table names them
+            c.addAnnotation(labels);
+        }
         write(BitmapEncoder.getBufferedImage(c), dir, png);
         return true;
     }
