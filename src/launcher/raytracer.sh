@@ -82,6 +82,20 @@ if [ -n "$user_cp" ]; then
 fi
 DEFAULT_JVM_OPTS=@DEFAULT_JVM_OPTS@
 
+# An argument whose bytes are not UTF-8 (a file name in Latin-1, say) reaches the JVM as U+FFFD, so no
+# file of that name can be opened or written: say so in one line, with the way round it, before the JVM
+# starts. Only an argument with a byte outside printable ASCII costs a process (iconv) to check.
+for a do
+    case $a in
+        *[!\ -~]*)
+            if command -v iconv >/dev/null 2>&1 && ! printf '%s' "$a" | iconv -f UTF-8 -t UTF-8 >/dev/null 2>&1; then
+                shown=$(printf '%s' "$a" | LC_ALL=C tr -c '[:print:]' '?')
+                echo "raytracer: the name '$shown' is not valid UTF-8 (a name in another encoding, e.g. Latin-1), and Java cannot open a file by such a name: rename the file (e.g. convmv -f latin1 -t utf8), or give it by redirection: raytracer - < NAME reads a scene, raytracer -o - scene.txt > NAME writes an image" >&2
+                exit 2
+            fi ;;
+    esac
+done
+
 # Whether stderr and stdout are terminals (the progress bar goes to stderr only when it is one; Java's
 # System.console() asks about stdin and stdout together). `[` is a shell builtin: no process start.
 if [ -t 2 ]; then tty2=true; else tty2=false; fi

@@ -106,6 +106,8 @@ public final class Main implements Callable<Integer> {
     private boolean mayRelaunch;
 
     private PrintStream out = System.out;
+    /** Whether a scene already said that standard output lost its image (then no second line says so). */
+    boolean stdoutLossReported;
     private PrintStream err = System.err;
     private java.io.InputStream in = System.in;
 
@@ -281,6 +283,9 @@ public final class Main implements Callable<Integer> {
         }
         String conflict = conflict();
         if (conflict == null) {
+            conflict = undecodableName();
+        }
+        if (conflict == null) {
             conflict = sceneProblem();
         }
         if (conflict != null) {
@@ -331,7 +336,7 @@ public final class Main implements Callable<Integer> {
      */
     private int outputChecked(int status) {
         out.flush();
-        if (out.checkError()) {
+        if (out.checkError() && !stdoutLossReported) {
             err.println("raytracer: cannot write to standard output (closed, or the disk is full); its output is lost");
             return Math.max(status, 1);
         }
@@ -375,6 +380,32 @@ public final class Main implements Callable<Integer> {
         }
         if (view && stats) {
             return "--stats does nothing with --view";
+        }
+        return null;
+    }
+
+    /**
+     * A file name the JVM could not decode, or null. A name whose bytes are not valid UTF-8 (Latin-1, say)
+     * reaches Java with U+FFFD in place of those bytes, so it names another file: a scene by it is "no
+     * such file", an image by it would be written under a name the user never typed. The installed
+     * launcher says so before the JVM starts; this catches {@code java RayTracer} started by hand. A name
+     * with U+FFFD that exists as decoded (typed so, in UTF-8) is used.
+     */
+    String undecodableName() {
+        List<String> names = new ArrayList<>();
+        scenes.forEach(p -> names.add(p.toString()));
+        if (outputArg != null) {
+            names.add(outputArg);
+        }
+        if (reportDir != null) {
+            names.add(reportDir.toString());
+        }
+        for (String n : names) {
+            if (n.indexOf('\uFFFD') >= 0 && !java.nio.file.Files.exists(Path.of(n), java.nio.file.LinkOption.NOFOLLOW_LINKS)) {
+                return "the name '" + n.replace('\uFFFD', '?') + "' is not valid UTF-8 (a name in another encoding, e.g. Latin-1), "
+                        + "and Java cannot open a file by such a name: rename the file (e.g. convmv -f latin1 -t utf8), or give it by redirection: raytracer - < NAME "
+                        + "reads a scene, raytracer -o - scene.txt > NAME writes an image";
+            }
         }
         return null;
     }

@@ -209,7 +209,8 @@ final class SceneJob {
                 PngEncoder.write(image, out);
                 out.flush();
                 if (out.checkError()) {
-                    return fail(name + ": cannot write the image to standard output (closed?)");
+                    main.stdoutLossReported = true;   // one line for the loss, not a second from Main.outputChecked
+                    return fail(name + ": cannot write the image to standard output (closed, or the disk is full); the image is lost");
                 }
                 summary = err;
             } else {

@@ -66,6 +66,8 @@ public final class Parser {
     private int degenerate;
     /** Surfaces other surfaces are built from (CSG operands): left out of the scene at the end. */
     private final java.util.Set<Surface> operands = java.util.Collections.newSetFromMap(new java.util.IdentityHashMap<>());
+    /** Surfaces whose operands are known to lead back to none of them (checked once: {@link OperandGraph}). */
+    private final java.util.Set<Surface> acyclic = java.util.Collections.newSetFromMap(new java.util.IdentityHashMap<>());
     private int firstDegenerateLine;
     /** Plausibility warnings ({@link Plausibility}), in the order of their objects. */
     private final List<String> plausibility = new ArrayList<>();
@@ -570,9 +572,13 @@ public final class Parser {
                 try {
                     List<Surface> ops = s.operands();
                     if (!ops.isEmpty()) {
+                        String cycle = OperandGraph.cycle(s, acyclic);
+                        if (cycle != null) {
+                            throw error(cycle);
+                        }
                         operands.addAll(ops);
                     }
-                } catch (RuntimeException | LinkageError e) {
+                } catch (RuntimeException | LinkageError | StackOverflowError e) {
                     throw error(o.getClass().getSimpleName() + ".operands() failed: " + describe(e));
                 }
                 scene.surfaces.add(s);

@@ -17,7 +17,7 @@ final class Geometry {
     /** Per class: surfaces, primitives, and the leaf operands of those with operands (by class). */
     private static final class Tally {
         long surfaces, primitives;
-        final Map<String, int[]> operands = new TreeMap<>();
+        final Map<String, long[]> operands = new TreeMap<>();
     }
 
     private Geometry() {
@@ -25,12 +25,18 @@ final class Geometry {
 
     static String describe(List<Surface> surfaces) {
         Map<String, Tally> bounded = new TreeMap<>(), unbounded = new TreeMap<>();
+        Map<Surface, Leaves> memo = new java.util.IdentityHashMap<>();
         for (Surface s : surfaces) {
             Tally t = (s.bounds().isFinite() ? bounded : unbounded).computeIfAbsent(s.getClass().getSimpleName(), k -> new Tally());
             t.surfaces++;
             long p = 0;
             for (Surface o : s.operands()) {
-                p += leaves(o, t.operands);
+                Leaves l = leaves(o, memo);
+                p = sum(p, l.primitives);
+                for (Map.Entry<String, Long> e : l.byClass.entrySet()) {
+                    long[] n = t.operands.computeIfAbsent(e.getKey(), k -> new long[1]);
+                    n[0] = sum(n[0], e.getValue());
+                }
             }
             t.primitives += s.operands().isEmpty() ? s.plannedPrimitiveCount() : p;
         }
@@ -50,32 +56,57 @@ final class Geometry {
             b.append(" in the BVH");
         }
         if (!unbounded.isEmpty()) {
-            Map<String, int[]> counts = new TreeMap<>();
+            Map<String, long[]> counts = new TreeMap<>();
             for (Map.Entry<String, Tally> e : unbounded.entrySet()) {
-                counts.put(e.getKey(), new int[] {(int) e.getValue().surfaces});
+                counts.put(e.getKey(), new long[] {e.getValue().surfaces});
             }
             b.append("; ").append(list(counts)).append(" tested against every ray (unbounded)");
         }
         return b.toString();
     }
 
-    /** Counts the leaf operands of a tree of operands by class; returns their primitives. */
-    private static long leaves(Surface s, Map<String, int[]> out) {
-        if (!s.operands().isEmpty()) {
-            long t = 0;
-            for (Surface o : s.operands()) {
-                t += leaves(o, out);
-            }
-            return t;
-        }
-        out.computeIfAbsent(s.getClass().getSimpleName(), k -> new int[1])[0]++;
-        return s.plannedPrimitiveCount();
+    /** The leaf operands under a surface by class (an operand counted each time it is used), and their primitives. */
+    private static final class Leaves {
+        final Map<String, Long> byClass = new TreeMap<>();
+        long primitives;
     }
 
-    private static String list(Map<String, int[]> counts) {
+    /**
+     * The leaf operands of a tree of operands; memoised per surface (identity), so operands shared
+     * level after level (a user's class may build such a graph) cost one visit each instead of one per
+     * path, and the counts saturate instead of overflowing.
+     */
+    private static Leaves leaves(Surface s, Map<Surface, Leaves> memo) {
+        Leaves known = memo.get(s);
+        if (known != null) {
+            return known;
+        }
+        Leaves l = new Leaves();
+        List<Surface> ops = s.operands();
+        if (ops.isEmpty()) {
+            l.byClass.put(s.getClass().getSimpleName(), 1L);
+            l.primitives = s.plannedPrimitiveCount();
+        } else {
+            for (Surface o : ops) {
+                Leaves c = leaves(o, memo);
+                l.primitives = sum(l.primitives, c.primitives);
+                c.byClass.forEach((k, v) -> l.byClass.merge(k, v, Geometry::sum));
+            }
+        }
+        memo.put(s, l);
+        return l;
+    }
+
+    private static long sum(long a, long b) {
+        long r = a + b;
+        return r < 0 ? Long.MAX_VALUE : r;
+    }
+
+    private static String list(Map<String, long[]> counts) {
         StringBuilder b = new StringBuilder();
-        for (Map.Entry<String, int[]> e : counts.entrySet()) {
-            b.append(b.length() == 0 ? "" : ", ").append(e.getValue()[0]).append(' ').append(e.getKey());
+        for (Map.Entry<String, long[]> e : counts.entrySet()) {
+            long n = e.getValue()[0];
+            b.append(b.length() == 0 ? "" : ", ").append(n < 1000 ? Long.toString(n) : PlanReport.count(n)).append(' ').append(e.getKey());
         }
         return b.toString();
     }

@@ -69,13 +69,16 @@ public final class RenderPlan implements ShadingPlan {
         // Breadth first: the scene's surfaces in order, then a CSG's operands (which shade its hits with
         // their own materials). Runs of surfaces sharing a material (a mesh's 100k triangles) cost one
         // comparison each, not a map lookup: the plan is derived before every render.
+        // Each operand once (an identity set): operands shared level after level (a user's class, a DAG)
+        // would otherwise be queued once per path, doubling at each level.
         java.util.ArrayDeque<Surface> parts = new java.util.ArrayDeque<>();
+        java.util.Set<Surface> queued = java.util.Collections.newSetFromMap(new java.util.IdentityHashMap<>());
         Material last = null;
         for (Surface s : scene.surfaces) {
-            last = use(s, last, parts);
+            last = use(s, last, parts, queued);
         }
         while (!parts.isEmpty()) {
-            last = use(parts.pop(), last, parts);
+            last = use(parts.pop(), last, parts, queued);
         }
         materials = new LinkedHashSet<>(used.keySet());
         materials.addAll(scene.materials);
@@ -101,7 +104,7 @@ public final class RenderPlan implements ShadingPlan {
      * Notes how {@code s}'s material shades (unless it is {@code last}, noted just before) and queues its
      * operands; returns the material to compare the next surface with.
      */
-    private Material use(Surface s, Material last, java.util.ArrayDeque<Surface> parts) {
+    private Material use(Surface s, Material last, java.util.ArrayDeque<Surface> parts, java.util.Set<Surface> queued) {
         Material m = s.material;
         if (m != null && m != last) {
             if (!used.containsKey(m)) {
@@ -111,7 +114,9 @@ public final class RenderPlan implements ShadingPlan {
         }
         List<Surface> ops = s.operands();
         for (int i = 0; i < ops.size(); i++) {
-            parts.add(ops.get(i));
+            if (queued.add(ops.get(i))) {
+                parts.add(ops.get(i));
+            }
         }
         return last;
     }

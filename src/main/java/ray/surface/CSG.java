@@ -85,6 +85,8 @@ public class CSG extends Surface {
     /** Leaves of this tree (a shared operand once per use), levels, and operand visits a ray may cost (saturating). */
     private long leaves = 1, visits;
     private int levels;
+    /** Whether some CSG of this tree has one surface as both operands (shared level after level, the cost doubles). */
+    private boolean shared;
 
     /**
      * Measures the tree from its operands' own measures (each CSG is initialised after its operands, so
@@ -98,11 +100,15 @@ public class CSG extends Surface {
         leaves = sat(ll + rl);
         visits = sat(sat(lv + rv) + leaves);
         levels = 1 + Math.max(left instanceof CSG c ? c.levels : 0, right instanceof CSG c ? c.levels : 0);
+        shared = left == right || left instanceof CSG c && c.shared || right instanceof CSG c && c.shared;
         if (visits > MAX_VISITS) {
             throw new IllegalArgumentException("this CSG tree would cost " + (visits == Long.MAX_VALUE ? "over 9e18"
                     : String.format(java.util.Locale.ROOT, "%,d", visits)) + " operand tests per ray (" + levels + " levels, "
                     + (leaves == Long.MAX_VALUE ? "over 9e18" : String.format(java.util.Locale.ROOT, "%,d", leaves))
-                    + " leaves counting an operand each time it is used), more than "
+                    + " leaves counting an operand each time it is used"
+                    + (shared ? ": one surface is both operands of a CSG, so each level doubles the cost"
+                            : 2L * levels >= leaves ? ": a ray tests every operand below each level of a chain"
+                            : ": a tree of that many surfaces") + "), more than "
                     + String.format(java.util.Locale.ROOT, "%,d", MAX_VISITS)
                     + " (expected a smaller tree: a chain of at most about 90 unions, a balanced tree of about 500 "
                     + "surfaces; for more, one closed Mesh)");

@@ -135,8 +135,33 @@ class HostileResourceTest {
             assertEquals(1, r.status());
             assertEquals(1, r.errLines().size(), r.err());
             assertTrue(r.err().contains(": Surface CSG: this CSG tree would cost 4,608 operand tests per ray (9 levels, 512 leaves "
-                    + "counting an operand each time it is used), more than 4,096"), r.err());
+                    + "counting an operand each time it is used: one surface is both operands of a CSG, so each level doubles the cost), "
+                    + "more than 4,096"), r.err());
         }
+    }
+
+    /**
+     * A class of one's own whose operands() lead back to itself: refused where it is declared (every walk
+     * of the scene's surfaces would be endless; it used to vanish from the scene, status 0).
+     */
+    @Test
+    void operandsThatLeadBackToTheSurfaceAreRefused() throws IOException {
+        Path s = write("self.txt", HEAD + "Surface SelfOperand\nref material white\n");
+        for (Run r : List.of(render(s), plan(s))) {
+            assertEquals(1, r.status());
+            assertEquals(List.of(s + ":9: SelfOperand's operands lead back to itself (a cycle: expected operands() to return the "
+                    + "surfaces it is built from, none of them built from it)"), r.errLines());
+        }
+    }
+
+    /** A class of one's own sharing operands 60 levels deep (2^60 paths): the plan visits each surface once. */
+    @Test
+    void operandsSharedLevelAfterLevelArePlannedOnce() throws IOException {
+        Path s = write("shared.txt", HEAD + "Surface SharedOperands\nref material white\n");
+        Run plan = plan(s);
+        assertEquals(0, plan.status(), plan.err());
+        assertTrue(plan.out().contains("1 SharedOperands (of 1.2e+18 Sphere) in the BVH"), plan.out());
+        assertEquals(0, render(s).status());
     }
 
     /** A left-deep chain of 10,000 unions: refused where it grows too costly, no StackOverflowError. */
