@@ -170,8 +170,36 @@ class HostileRunTest {
                 {"--stats", "--json", "-o", dir.resolve("x.png").toString(), s.toString()}}) {
             Run r = run(InputStream.nullInputStream(), full, args);
             assertEquals(1, r.status(), String.join(" ", args));
-            assertTrue(r.err().contains("raytracer: cannot write to standard output"), r.err());
+            assertEquals(List.of("raytracer: cannot write to standard output (closed, or the disk is full); its output is lost"),
+                    r.errLines());
         }
+        // the image itself lost: one line naming the scene (there were two, the second repeating the first)
+        Run png = run(InputStream.nullInputStream(), full, "-q", "-o", "-", s.toString());
+        assertEquals(1, png.status());
+        assertEquals(List.of(s + ": cannot write the image to standard output (closed, or the disk is full); the image is lost"),
+                png.errLines());
+    }
+
+    /**
+     * A name whose bytes were not UTF-8 reaches Java with U+FFFD: refused in one line with the way round
+     * it (it was "no such file" for a scene, and an image was written under a name nobody typed).
+     */
+    @Test
+    void aNameThatIsNotUtf8IsRefusedWithTheWayRoundIt() throws IOException {
+        Path s = write("s.txt", GOOD);
+        String message = "raytracer: the name '%s' is not valid UTF-8 (a name in another encoding, e.g. Latin-1), and Java cannot "
+                + "open a file by such a name: rename the file (e.g. convmv -f latin1 -t utf8), or give it by redirection: "
+                + "raytracer - < NAME reads a scene, raytracer -o - scene.txt > NAME writes an image";
+        String scene = dir.resolve("caf\uFFFD.txt").toString(), png = dir.resolve("x\uFFFD.png").toString();
+        for (String[] args : new String[][] {{scene}, {"--plan", scene}, {"-o", png, s.toString()}}) {
+            Run r = run(InputStream.nullInputStream(), new ByteArrayOutputStream(), args);
+            assertEquals(2, r.status(), String.join(" ", args));
+            assertEquals(List.of(message.formatted(args[args.length - 1].equals(scene) ? scene.replace('\uFFFD', '?')
+                    : png.replace('\uFFFD', '?'))), r.errLines());
+        }
+        assertEquals(List.of("s.txt"), MainBadInputTest.names(dir), "nothing written");
+        Files.writeString(dir.resolve("caf\uFFFD.txt"), GOOD);     // a name typed with U+FFFD itself, in UTF-8: an ordinary scene
+        assertEquals(0, run(InputStream.nullInputStream(), new ByteArrayOutputStream(), "-q", scene).status());
     }
 
     /** `--plan -` reads standard input (a file named '-' in the folder is not read). */

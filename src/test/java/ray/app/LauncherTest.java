@@ -158,4 +158,29 @@ class LauncherTest {
             assertEquals(1, s.filter(f -> f.getFileName().toString().endsWith(".png")).count(), "café.png written");
         }
     }
+
+    /**
+     * A name whose bytes are not UTF-8 (café in Latin-1) cannot be opened by the JVM (it decodes the byte
+     * to U+FFFD): the launcher says so in one line with the way round it, status 2, before Java starts;
+     * and the way round it works. The name's bytes are made by the shell.
+     */
+    @Test
+    void aNameThatIsNotUtf8IsNamedWithTheWayRoundIt() throws Exception {
+        Path script = installHome().resolve("bin/raytracer");
+        Path work = Files.createDirectories(dir.resolve("latin1"));
+        ProcessBuilder pb = new ProcessBuilder("sh", "-c", "name=$(printf 'caf\\351.txt'); printf 'Width 4\\nHeight 3\\n\\n"
+                + "Camera Camera\\n' > \"$name\"; \"$0\" -q \"$name\"; echo \"status $?\"; \"$0\" -q - < \"$name\" > out.png; "
+                + "echo \"status $?\"", script.toString()).directory(work.toFile());
+        pb.environment().remove("JAVA_OPTS");
+        pb.environment().remove("RAYTRACER_OPTS");
+        pb.environment().put("JAVA_HOME", System.getProperty("java.home"));
+        pb.redirectErrorStream(true);
+        Process p = pb.start();
+        String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        assertTrue(p.waitFor(60, TimeUnit.SECONDS));
+        assertEquals("raytracer: the name 'caf?.txt' is not valid UTF-8 (a name in another encoding, e.g. Latin-1), and Java cannot "
+                + "open a file by such a name: rename the file (e.g. convmv -f latin1 -t utf8), or give it by redirection: "
+                + "raytracer - < NAME reads a scene, raytracer -o - scene.txt > NAME writes an image\nstatus 2\nstatus 0\n", out);
+        assertTrue(Files.size(work.resolve("out.png")) > 0, "read from standard input, the scene renders");
+    }
 }
