@@ -191,8 +191,7 @@ public final class Bvh implements Accelerator {
             }
             Aabb a = typeOf(s).bounds(s, scratch);   // a built-in type writes it into scratch: no box per primitive
             if (a == null) {     // a user's bounds() returning null: blamed on it, not on the BVH's build
-                throw new IllegalStateException(s.getClass().getSimpleName() + ".bounds() returned null (expected a box around "
-                        + "the surface, or not to override bounds() for a surface without one)");
+                throw new BadBoundsException(s.getClass());
             }
             if (a.isFinite()) {
                 int i = bounded.size();

@@ -23,6 +23,8 @@ final class ExitGuard extends Thread {
     private static volatile boolean installed;
     /** While the command runs (every mode but the open viewer): any System.exit then is not ours. */
     private static volatile boolean active;
+    /** While the viewer is open: a System.exit from a user's class (a render, a thread it started) is not a quit. */
+    private static volatile boolean viewer;
     private final PrintStream err;
 
     private ExitGuard(PrintStream err) {
@@ -38,9 +40,18 @@ final class ExitGuard extends Thread {
         }
     }
 
+    /** What is being done to the scene, for the line: "rendered", "planned". */
+    private static volatile String doing = "rendered";
+
     /** The scene now being read or rendered, or null between scenes. */
     static void working(String sceneName, ProgressLine line) {
+        working(sceneName, line, "rendered");
+    }
+
+    /** The scene now being read and {@code what} ("rendered", "planned"). */
+    static void working(String sceneName, ProgressLine line, String what) {
         progress = line;
+        doing = what;
         scene = sceneName;
         lastScene = sceneName;
     }
@@ -52,6 +63,17 @@ final class ExitGuard extends Thread {
      */
     static void active(boolean on) {
         active = on;
+    }
+
+    /**
+     * The viewer is open (after {@link Main#runProcess} has returned {@link Main#VIEWER_OPEN}): from now
+     * on the program ends when its windows are closed (the viewer's own System.exit, or the JDK's), and a
+     * System.exit from any other code (a user's class rendering, or a thread it started) ends it with
+     * status 1 and one line, instead of closing the windows silently with the status the class chose.
+     */
+    static void viewerOpen() {
+        viewer = true;
+        active = true;
     }
 
     static void idle() {
@@ -73,14 +95,38 @@ final class ExitGuard extends Thread {
         if (caller == null) {
             return;         // a signal (Ctrl+C): the JVM's own status (130) says so; OutputFile's hook cleans up
         }
+        if (viewer && s == null && ownCode(caller.substring(0, caller.lastIndexOf('.')))) {
+            return;         // the viewer's last window closed, or its Quit
+        }
         OutputFile.deletePendingTemporaries();
         String last = lastScene;
         err.println(Main.oneLine(s != null ? s + ": " + caller + " called System.exit while the scene was being "
-                + "rendered; the program stopped there and no image was written"
+                + doing + "; the program stopped there" + (doing.equals("rendered") ? " and no image was written" : "")
+                : viewer ? "raytracer: " + caller + " called System.exit while the viewer was open; the viewer closed there "
+                        + "(a class of yours ended the program; nothing was saved)"
                 : "raytracer: " + caller + " called System.exit" + (last != null ? " after " + last : "")
                         + "; the program stopped there and the scenes after it were not done"));
         err.flush();
         Runtime.getRuntime().halt(USER_EXIT_STATUS);
+    }
+
+    /**
+     * Whether {@code className} is the renderer's own or the JDK's (loaded from this program's own jar
+     * or folder, or by the JDK's loaders), not a user's class from the class path.
+     */
+    static boolean ownCode(String className) {
+        try {
+            Class<?> c = Class.forName(className, false, ExitGuard.class.getClassLoader());
+            ClassLoader l = c.getClassLoader();
+            if (l == null || l == ClassLoader.getPlatformClassLoader()) {
+                return true;
+            }
+            java.security.CodeSource mine = ExitGuard.class.getProtectionDomain().getCodeSource();
+            java.security.CodeSource its = c.getProtectionDomain().getCodeSource();
+            return mine != null && its != null && mine.getLocation() != null && mine.getLocation().equals(its.getLocation());
+        } catch (ClassNotFoundException | LinkageError | SecurityException e) {
+            return false;
+        }
     }
 
     /** The method that called System.exit or Runtime.exit, or null if no thread is exiting that way. */

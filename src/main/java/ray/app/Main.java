@@ -165,7 +165,9 @@ public final class Main implements Callable<Integer> {
         ExitGuard.install(System.err);
         ExitGuard.active(true);
         int status = run(System.in, stdout, System.err, args);
-        ExitGuard.active(false);     // the status is ours now (RayTracer.main exits with it), as is the viewer's own exit
+        if (status != VIEWER_OPEN) {
+            ExitGuard.active(false); // the status is ours now (RayTracer.main exits with it); the open viewer stays guarded
+        }
         return status;
     }
 
@@ -464,6 +466,7 @@ public final class Main implements Callable<Integer> {
                     : "DISPLAY=" + display + " does not answer") + ");")));
             return 2;
         }
+        ExitGuard.viewerOpen();      // the viewer's own exit (its windows closed) is ours; a user's class's is not
         ray.viewer.ViewingFrame.open(scenes, renderSettings());
         return VIEWER_OPEN;
     }

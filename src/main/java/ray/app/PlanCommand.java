@@ -39,6 +39,7 @@ final class PlanCommand {
             boolean stdin = p.toString().equals("-");
             String name = Failures.oneLine(stdin ? "<stdin>" : p.toString());
             List<String> warnings = new ArrayList<>();
+            ExitGuard.working(name, null, "planned");     // a user's class calling System.exit is named with the scene
             try {
                 Scene scene = stdin ? Parser.parse(in, name, warnings) : Parser.parse(p, warnings);
                 for (String w : warnings) {
@@ -65,6 +66,7 @@ final class PlanCommand {
                 err.println(name + ": cannot plan the scene: " + Failures.describe(e));
                 failed++;
             }
+            ExitGuard.idle();
             out.flush();
             if (out.checkError()) {
                 return 1;    // the command line says so (Main.outputChecked); no use planning the rest

@@ -414,6 +414,7 @@ public final class ViewingFrame extends JFrame {
         @Override
         public void ended(RenderJob job) {
             if (job.state() == RenderJob.State.FAILED) {
+                System.err.println(ray.Failures.oneLine(job.error()));   // as on the command line (and as warnings are): one line on stderr too
                 showError(job.error());
                 RenderJob back = session.shown();
                 // the last finished image comes back if it is this file's; another scene's does not stay
