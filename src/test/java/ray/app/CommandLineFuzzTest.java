@@ -39,7 +39,8 @@ class CommandLineFuzzTest {
     private static final String[] NAMES = {"good.txt", "bad.txt", "sub", "sub/", "link.txt", "dirlink", "dirlink/good.txt",
         "@good.txt", "-dash.txt", "missing.txt", "missing/", "good.png", "out", "sub/x.png", "x".repeat(250) + ".txt",
         "y".repeat(300), "", ".", "sub/../good.txt", "good.txt/x.png",
-        "mesh.txt", "model.obj", "notes.txt", "notes-link.png", "ro.png", "mesh.png", "site", "site/", "dag.txt"};
+        "mesh.txt", "model.obj", "notes.txt", "notes-link.png", "ro.png", "mesh.png", "site", "site/", "dag.txt",
+        "caf\uFFFD.txt"};   // as a Latin-1 name reaches Java (no such file: refused as not UTF-8, never written)
     private static final String OBJ = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
     private static final String MESH = GOOD + "\nMaterial Diffuse d\n\nSurface Mesh\nString file model.obj\nref material d\n";
     private static final byte[] RO_PNG = {(byte) 0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n', 4, 2};
