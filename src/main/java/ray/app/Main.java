@@ -295,7 +295,7 @@ public final class Main implements Callable<Integer> {
             return 2;
         }
         if (plan) {
-            return outputChecked(PlanCommand.run(scenes, json, renderSettings(), in, out, err));
+            return outputChecked(PlanCommand.run(scenes, json, quiet, renderSettings(), in, out, err));
         }
         if (study) {
             if (scenes.isEmpty() || output != null) {

@@ -28,8 +28,10 @@ final class PlanCommand {
      * own classes throw while it is read or planned (an Error, a StackOverflowError from a deep chain,
      * an exception whose message throws) is one line naming the scene; the next scene is still
      * planned. A plan that cannot be written to {@code out} (a closed pipe, a full disk) is a failure.
+     * {@code quiet} (-q): the scenes' warnings are not printed, only failures.
      */
-    static int run(List<Path> scenes, boolean json, RenderSettings settings, java.io.InputStream in, PrintStream out, PrintStream err) {
+    static int run(List<Path> scenes, boolean json, boolean quiet, RenderSettings settings, java.io.InputStream in, PrintStream out,
+            PrintStream err) {
         if (scenes.isEmpty()) {
             err.println("raytracer: --plan needs scene files");
             return 2;
@@ -42,7 +44,7 @@ final class PlanCommand {
             ExitGuard.working(name, null, "planned");     // a user's class calling System.exit is named with the scene
             try {
                 Scene scene = stdin ? Parser.parse(in, name, warnings) : Parser.parse(p, warnings);
-                for (String w : warnings) {
+                for (String w : quiet ? List.<String>of() : warnings) {
                     err.println(w);
                 }
                 PlanReport report = PlanReport.of(name, scene, settings);

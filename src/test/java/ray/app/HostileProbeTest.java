@@ -57,6 +57,8 @@ class HostileProbeTest {
 
     private static Path launcher;
     private static Path classes;
+    /** This test's own classes (SelfOperand, SharedOperands in the default package), for the probes that name them. */
+    private static String testClasses;
     private static Process xvfb;
     private static String display;
 
@@ -167,10 +169,15 @@ class HostileProbeTest {
 
     /** A failure of a user's class at planning time: every mode. */
     static final String ALL_FAIL = "RENDER=1 STDOUT=1 STATS_JSON=1 PLAN=1 PLAN_JSON=1 STUDY=1 VIEW=open";
-    /** A failure while the scene is read: one code path (the parser) for every mode, so one run per way of reading it. */
-    static final String READ_FAIL = "RENDER=1 PLAN=1 STUDY=1 VIEW=open";
+    /**
+     * A failure while the scene is read: one code path (the parser) for every mode, so a render and a
+     * plan for each; the study and the viewer read scenes the same way, and the FIFO and the class that
+     * cannot be loaded run there too ({@link #EVERY_READ}).
+     */
+    static final String READ_FAIL = "RENDER=1 PLAN=1";
+    static final String EVERY_READ = "RENDER=1 PLAN=1 STUDY=1 VIEW=open";
     /** A failure while rendering: every mode that renders; the plan, which does not, succeeds. */
-    static final String RENDERS_FAIL = "RENDER=1 STDOUT=1 STATS_JSON=1 PLAN=0 STUDY=1 VIEW=open";
+    static final String RENDERS_FAIL = "RENDER=1 STDOUT=1 PLAN=0 STUDY=1 VIEW=open";
     static final String OBJ = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
 
     static {
@@ -209,7 +216,7 @@ class HostileProbeTest {
         probe("2.2", "System.exit(0) in shade()", file("q.txt", material("Quit")),
                 "RENDER=1 STDOUT=1 STATS_JSON=1 PLAN=0 PLAN_JSON=0 STUDY=1 VIEW=1", "Quit\\.shade called System\\.exit", "q.txt");
         probe("2.2", "System.exit(0) in terms()", file("q.txt", material("QuitTerms")),
-                "RENDER=1 PLAN=1 PLAN_JSON=1 STUDY=1 VIEW=1", "QuitTerms\\.terms called System\\.exit", "q.txt");
+                "RENDER=1 PLAN=1 PLAN_JSON=1 STUDY=1", "QuitTerms\\.terms called System\\.exit", "q.txt");
         probe("2.2", "a user thread calls System.exit between two scenes", both(file("later.txt", material("Later")),
                 file("slow.txt", material("Slow"))), "RENDER=1 VIEW=1", "Later\\.lambda.*called System\\.exit", "-j", "1", "later.txt", "slow.txt");
         probe("2.3", "an Error in terms()", file("t.txt", material("ErrTerms")), ALL_FAIL, "ErrTerms\\.terms", "t.txt");
@@ -222,9 +229,9 @@ class HostileProbeTest {
         }
         probe("2.3", "a 5,000-level Glazed chain", file("g.txt", glazed.toString()), READ_FAIL,
                 "g\\.txt:\\d+: Material GlazedMaterial: a chain of more than 100 Glazed", "g.txt");
-        probe("2.4", "a FIFO as the scene", d -> mkfifo(d.resolve("pipe.txt")), READ_FAIL, "pipe\\.txt: cannot read the scene: not a regular "
+        probe("2.4", "a FIFO as the scene", d -> mkfifo(d.resolve("pipe.txt")), EVERY_READ, "pipe\\.txt: cannot read the scene: not a regular "
                 + "file \\(a FIFO\\)", "pipe.txt");
-        probe("2.5", "a class whose superclass is missing", file("n.txt", material("NeedsBase")), READ_FAIL,
+        probe("2.5", "a class whose superclass is missing", file("n.txt", material("NeedsBase")), EVERY_READ,
                 "n\\.txt:6: class 'NeedsBase' cannot be loaded: it needs the class Base", "n.txt");
         probe("2.5", "a class compiled for a newer Java", file("n.txt", material("NewJava")), READ_FAIL,
                 "n\\.txt:6: class 'NewJava' cannot be loaded: it was compiled for a newer Java", "n.txt");
@@ -297,6 +304,9 @@ class HostileProbeTest {
         probe("6.2", "--plan --view", file("a.txt", GOOD), "PLAN=2", "raytracer: --view does nothing with --plan", "--view", "a.txt");
         probe("6.2", "--quick without --study", file("a.txt", GOOD), "RENDER=2 PLAN=2", "raytracer: --quick goes with --study", "--quick", "a.txt");
         probe("6.2", "--stats with --plan", file("a.txt", GOOD), "PLAN=2 STUDY=2", "raytracer: --stats reports a render", "--stats", "a.txt");
+        probe("6.2", "-q with a zero-area triangle and a negative colour", file("w.txt", GOOD.replace("Material Diffuse m",
+                "Material Diffuse m\nVector3d diffuseColor [-1 0 0]") + "Surface Triangle\nref material m\n"), "RENDER=0 PLAN=0 STUDY=0", "",
+                "-q", "w.txt");
         probe("6.2", "-o ''", file("a.txt", GOOD), "RENDER=2", "raytracer: --output is empty", "-o", "", "a.txt");
         probe("6.2", "s.txt s.txt", file("s.txt", GOOD), "RENDER=2 PLAN=2 STUDY=2", "raytracer: the scene s\\.txt is given twice", "s.txt", "s.txt");
         probe("6.2", "s.txt ./s.txt", file("s.txt", GOOD), "RENDER=2", "raytracer: the scene \\./s\\.txt is given twice", "s.txt", "./s.txt");
@@ -357,28 +367,6 @@ class HostileProbeTest {
                     @Override public ray.accel.Aabb bounds() { return null; }
                 }
                 """);
-        CLASSES.put("SelfOperand", """
-                public class SelfOperand extends ray.surface.Sphere {
-                    @Override public java.util.List<ray.surface.Surface> operands() { return java.util.List.of(this); }
-                }
-                """);
-        CLASSES.put("SharedOperands", """
-                import java.util.List;
-                import ray.surface.Sphere;
-                import ray.surface.Surface;
-                public class SharedOperands extends Sphere {
-                    private final List<Surface> parts;
-                    public SharedOperands() {
-                        Surface below = new Sphere();
-                        for (int level = 0; level < 60; level++) {
-                            Surface shared = below;
-                            below = new Sphere() { @Override public List<Surface> operands() { return List.of(shared, shared); } };
-                        }
-                        parts = below.operands();
-                    }
-                    @Override public List<Surface> operands() { return parts; }
-                }
-                """);
     }
 
     @BeforeAll
@@ -406,6 +394,8 @@ class HostileProbeTest {
         bytes[6] = 0;
         bytes[7] = 99;                                         // class file version 99: a Java from the future
         Files.write(newer, bytes);
+        testClasses = Stream.of(System.getProperty("java.class.path").split(File.pathSeparator))
+                .filter(e -> Files.exists(Path.of(e, "SharedOperands.class"))).findFirst().orElseThrow();
         display = startXvfb();
     }
 
@@ -494,7 +484,7 @@ class HostileProbeTest {
         pb.environment().remove("JAVA_OPTS");
         pb.environment().remove("RAYTRACER_OPTS");
         pb.environment().put("JAVA_HOME", System.getProperty("java.home"));
-        pb.environment().put("CLASSPATH", classes.toString());
+        pb.environment().put("CLASSPATH", classes + File.pathSeparator + testClasses);
         pb.environment().remove("DISPLAY");
         if (mode == Mode.VIEW) {
             pb.environment().put("DISPLAY", display);
@@ -565,6 +555,8 @@ class HostileProbeTest {
             if (lines.stream().noneMatch(l -> p.says().matcher(l).find())) {
                 problems.add("no line says /" + p.says() + "/");
             }
+        } else if (p.args().contains("-q") && !lines.isEmpty()) {
+            problems.add("-q printed " + lines.size() + " lines");
         } else if ((spec == SAYS || !p.says().pattern().isEmpty() && p.status().values().stream().allMatch(v -> v == 0))
                 && !p.says().matcher(err + new String(out, StandardCharsets.UTF_8)).find()) {   // a probe that succeeds says so
             problems.add("the output does not say /" + p.says() + "/");

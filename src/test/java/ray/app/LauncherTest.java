@@ -143,17 +143,9 @@ class LauncherTest {
     void aNonAsciiSceneNameRendersUnderTheCLocale() throws Exception {
         Path script = installHome().resolve("bin/raytracer");
         Path work = Files.createDirectories(dir.resolve("c-locale"));
-        ProcessBuilder pb = new ProcessBuilder("sh", "-c", "name=$(printf 'caf\\303\\251.txt'); printf 'Width 4\\nHeight 3\\n\\n"
-                + "Camera Camera\\n' > \"$name\"; LC_ALL=C LANG=C exec \"$0\" -q \"$name\"", script.toString()).directory(work.toFile());
-        pb.environment().remove("JAVA_OPTS");
-        pb.environment().remove("RAYTRACER_OPTS");
-        pb.environment().put("JAVA_HOME", System.getProperty("java.home"));
-        pb.redirectErrorStream(true);
-        Process p = pb.start();
-        String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
-        assertTrue(p.waitFor(60, TimeUnit.SECONDS));
-        assertEquals(0, p.exitValue(), out);
-        assertEquals("", out);
+        String out = shell(script, work, "name=$(printf 'caf\\303\\251.txt'); printf 'Width 4\\nHeight 3\\n\\n"
+                + "Camera Camera\\n' > \"$name\"; LC_ALL=C LANG=C \"$0\" -q \"$name\"; echo \"status $?\"");
+        assertEquals("status 0\n", out);
         try (Stream<Path> s = Files.list(work)) {
             assertEquals(1, s.filter(f -> f.getFileName().toString().endsWith(".png")).count(), "café.png written");
         }
@@ -168,19 +160,28 @@ class LauncherTest {
     void aNameThatIsNotUtf8IsNamedWithTheWayRoundIt() throws Exception {
         Path script = installHome().resolve("bin/raytracer");
         Path work = Files.createDirectories(dir.resolve("latin1"));
-        ProcessBuilder pb = new ProcessBuilder("sh", "-c", "name=$(printf 'caf\\351.txt'); printf 'Width 4\\nHeight 3\\n\\n"
+        String out = shell(script, work, "name=$(printf 'caf\\351.txt'); printf 'Width 4\\nHeight 3\\n\\n"
                 + "Camera Camera\\n' > \"$name\"; \"$0\" -q \"$name\"; echo \"status $?\"; \"$0\" -q - < \"$name\" > out.png; "
-                + "echo \"status $?\"", script.toString()).directory(work.toFile());
+                + "echo \"status $?\"");
+        assertEquals("raytracer: the name 'caf?.txt' is not valid UTF-8 (a name in another encoding, e.g. Latin-1), and Java cannot "
+                + "open a file by such a name: rename the file (e.g. convmv -f latin1 -t utf8), or give it by redirection: "
+                + "raytracer - < NAME reads a scene, raytracer -o - scene.txt > NAME writes an image\nstatus 2\nstatus 0\n", out);
+        assertTrue(Files.size(work.resolve("out.png")) > 0, "read from standard input, the scene renders");
+    }
+
+    /**
+     * Runs {@code script} in {@code sh -c} (names made from bytes by the shell, whatever this JVM's
+     * encoding), with the launcher as $0; returns stdout and stderr together.
+     */
+    private static String shell(Path launcher, Path work, String script) throws Exception {
+        ProcessBuilder pb = new ProcessBuilder("sh", "-c", script, launcher.toString()).directory(work.toFile());
         pb.environment().remove("JAVA_OPTS");
         pb.environment().remove("RAYTRACER_OPTS");
         pb.environment().put("JAVA_HOME", System.getProperty("java.home"));
         pb.redirectErrorStream(true);
         Process p = pb.start();
         String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
-        assertTrue(p.waitFor(60, TimeUnit.SECONDS));
-        assertEquals("raytracer: the name 'caf?.txt' is not valid UTF-8 (a name in another encoding, e.g. Latin-1), and Java cannot "
-                + "open a file by such a name: rename the file (e.g. convmv -f latin1 -t utf8), or give it by redirection: "
-                + "raytracer - < NAME reads a scene, raytracer -o - scene.txt > NAME writes an image\nstatus 2\nstatus 0\n", out);
-        assertTrue(Files.size(work.resolve("out.png")) > 0, "read from standard input, the scene renders");
+        assertTrue(p.waitFor(60, TimeUnit.SECONDS), "the shell ended");
+        return out;
     }
 }
