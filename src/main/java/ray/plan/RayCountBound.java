@@ -1,7 +1,10 @@
 package ray.plan;
 
+import java.util.ArrayDeque;
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.HashMap;
+import java.util.IdentityHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
@@ -369,13 +372,27 @@ public final class RayCountBound {
             return u[0] > u[2] ? new int[4] : u;
         }
 
-        /** The materials a hit on {@code s} can shade with: its own and its operands' (a CSG's), all the way down. */
+        /**
+         * The materials a hit on {@code s} can shade with: its own and its operands' (a CSG's), all the way
+         * down, each operand once (an identity set: operands a user's class shares level after level would
+         * otherwise be walked once per path, 2^60 times for 60 levels).
+         */
         private static void materials(Surface s, Set<Material> out) {
-            if (s.material != null) {
-                out.add(s.material);
-            }
-            for (Surface o : s.operands()) {
-                materials(o, out);
+            ArrayDeque<Surface> todo = new ArrayDeque<>();
+            Set<Surface> seen = Collections.newSetFromMap(new IdentityHashMap<>());
+            todo.push(s);
+            seen.add(s);
+            while (!todo.isEmpty()) {
+                Surface t = todo.pop();
+                if (t.material != null) {
+                    out.add(t.material);
+                }
+                List<Surface> ops = t.operands();
+                for (int i = ops.size() - 1; i >= 0; i--) {     // the left operand's materials first, as a recursion finds them
+                    if (seen.add(ops.get(i))) {
+                        todo.push(ops.get(i));
+                    }
+                }
             }
         }
     }
