@@ -11,18 +11,71 @@ import javax.vecmath.Tuple3d;
 /**
  * The settable fields of scene classes: non-private, non-static, non-final fields found by exact name
  * up the superclass chain, and the type keyword ({@code int}, {@code double}, {@code String},
- * {@code Vector3d}, {@code ref}) each one takes. Looked up once per (class, name) and cached.
+ * {@code Vector3d}, {@code ref}) each one takes. Looked up once per (class, name) and kept per class
+ * as a short list that a parameter line's field name is compared with where it stands in the line.
  */
 final class Fields {
 
-    private final Map<Class<?>, Map<String, Field>> cache = new HashMap<>();
+    /**
+     * A field a scene names: its name (also as chars), the field, and the type keyword it takes (null:
+     * none, a scene cannot set it) with the keyword's place in {@link Parser#TYPES} (-1 for none).
+     */
+    record Entry(String name, char[] chars, Field field, String keyword, int type) {
+    }
 
-    Field find(Class<?> c, String name) throws Problem {
-        Map<String, Field> byName = cache.computeIfAbsent(c, k -> new HashMap<>());
-        Field f = byName.get(name);
-        if (f != null) {
-            return f;
+    private final Map<Class<?>, List<Entry>> cache = new HashMap<>();
+    /** The class last asked about and its entries: a large scene sets fields of one class line after line. */
+    private Class<?> lastClass;
+    private List<Entry> lastEntries;
+
+    /** The field chars [from, to) of {@code line} name in {@code c}; a Problem (the message) when it is not settable. */
+    Entry find(Class<?> c, char[] line, int from, int to) throws Problem {
+        List<Entry> entries = entries(c);
+        int n = to - from;
+        next:
+        for (int i = 0; i < entries.size(); i++) {   // indexed: an iterator per line is garbage
+            char[] name = entries.get(i).chars;
+            if (name.length != n) {
+                continue;
+            }
+            for (int k = n - 1; k >= 0; k--) {           // from the end: v0, v1, v2 differ there
+                if (name[k] != line[from + k]) {
+                    continue next;
+                }
+            }
+            return entries.get(i);
         }
+        return add(c, entries, new String(line, from, n));
+    }
+
+    /** The field {@code name} names in {@code c}; a Problem (the message) when it is not settable. */
+    Entry find(Class<?> c, String name) throws Problem {
+        List<Entry> entries = entries(c);
+        for (Entry e : entries) {
+            if (e.name.equals(name)) {
+                return e;
+            }
+        }
+        return add(c, entries, name);
+    }
+
+    private List<Entry> entries(Class<?> c) {
+        if (c != lastClass) {
+            lastEntries = cache.computeIfAbsent(c, k -> new ArrayList<>());
+            lastClass = c;
+        }
+        return lastEntries;
+    }
+
+    private static Entry add(Class<?> c, List<Entry> entries, String name) throws Problem {
+        Field f = lookUp(c, name);
+        String k = keyword(f.getType());
+        Entry e = new Entry(name, name.toCharArray(), f, k, k == null ? -1 : Parser.TYPES.indexOf(k));
+        entries.add(e);
+        return e;
+    }
+
+    private static Field lookUp(Class<?> c, String name) throws Problem {
         String owner = c.getSimpleName();
         for (Class<?> k = c; k != null && k != Object.class; k = k.getSuperclass()) {
             Field d;
@@ -45,7 +98,6 @@ final class Fields {
             } catch (RuntimeException e) {
                 throw new Problem("field " + Values.quote(name) + " of " + owner + " cannot be accessed (" + e.getClass().getSimpleName() + ")");
             }
-            byName.put(name, d);
             return d;
         }
         List<String> names = settableNames(c);

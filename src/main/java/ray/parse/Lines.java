@@ -15,6 +15,11 @@ import java.nio.charset.StandardCharsets;
  * the rest of it), no NUL or other control characters (binary data), valid UTF-8. Lines end at
  * {@code \n}, {@code \r\n} or {@code \r}; a leading byte-order mark is dropped. A stream is read as
  * it is parsed, so an endless or huge input costs at most one line of memory.
+ *
+ * <p>Every line, from text or from bytes, is handed on the same way: its chars in one reused array
+ * ({@link #chars()}, {@link #length()}), with no String made for it unless someone asks for one
+ * ({@link #text()}, for a message). A plain ASCII line is widened byte by byte as it is scanned for
+ * control characters; only a line with a byte above 0x7F goes through the UTF-8 decoder.
  */
 final class Lines {
 
@@ -32,11 +37,11 @@ final class Lines {
     private final byte[] buf;
     private int bufPos, bufLen;
     private boolean eof;
-    private byte[] lineBytes;
-    private int len;
-    private boolean ascii;
     private CharsetDecoder utf8;
-    /** The line last read as text; null for an ASCII line until {@link #text()} makes it. */
+    /** The line last read: chars [0, len) of {@code chars} (reused from line to line). */
+    private char[] chars = new char[256];
+    private int len;
+    /** The line last read as a String, once {@link #text()} made it; null until then. */
     private String current;
 
     private int line;
@@ -62,7 +67,6 @@ final class Lines {
 
     static Lines of(InputStream in, String file) throws SceneFormatException, IOException {
         Lines l = new Lines(file, null, in);
-        l.lineBytes = new byte[256];
         l.utf8 = StandardCharsets.UTF_8.newDecoder().onMalformedInput(CodingErrorAction.REPORT)
                 .onUnmappableCharacter(CodingErrorAction.REPORT);
         while (!l.eof && l.bufLen < BINARY_SNIFF) {
@@ -88,35 +92,37 @@ final class Lines {
     }
 
     /**
-     * Reads the next line, checking it, and returns false at the end of the input. Its text is then
-     * {@link #text()}; when it is plain ASCII ({@link #ascii()}), also its bytes, {@link #bytes()}
-     * [0, {@link #length()}), which is all the parser's fast path reads.
+     * Reads the next line, checking it, and returns false at the end of the input. Its chars are then
+     * {@link #chars()} [0, {@link #length()}), valid until the next call.
      */
     boolean advance() throws SceneFormatException, IOException {
+        current = null;
         return text != null ? nextFromText() : nextFromBytes();
     }
 
-    /** The line last read, without its terminator. */
+    /** The chars of the line last read, without its terminator: [0, {@link #length()}). */
+    char[] chars() {
+        return chars;
+    }
+
+    /** How many of {@link #chars()} the line has. */
+    int length() {
+        return len;
+    }
+
+    /** The line last read as a String (made once, when asked for). */
     String text() {
-        if (current == null) {      // a plain ASCII line: each byte is its char, as UTF-8 decoding gives
-            current = new String(lineBytes, 0, len, StandardCharsets.ISO_8859_1);
+        if (current == null) {
+            current = new String(chars, 0, len);
         }
         return current;
     }
 
-    /** Whether the line last read came from bytes and is plain ASCII (so {@link #bytes()} holds it). */
-    boolean ascii() {
-        return ascii;
-    }
-
-    /** The bytes of an {@link #ascii()} line, valid until the next {@link #advance()}. */
-    byte[] bytes() {
-        return lineBytes;
-    }
-
-    /** How many of {@link #bytes()} the line has. */
-    int length() {
-        return len;
+    /** Room for {@code n} chars in {@link #chars}, keeping those it holds. */
+    private void room(int n) {
+        if (n > chars.length) {
+            chars = java.util.Arrays.copyOf(chars, Math.max(n, Math.min(2 * chars.length, LONGEST)));
+        }
     }
 
     private boolean nextFromText() throws SceneFormatException {
@@ -139,7 +145,9 @@ final class Lines {
             }
             i++;
         }
-        current = text.substring(start, i);
+        len = i - start;
+        room(len);
+        text.getChars(start, i, chars, 0);
         pos = i < n && text.charAt(i) == '\r' && i + 1 < n && text.charAt(i + 1) == '\n' ? i + 2 : i + 1;
         return true;
     }
@@ -155,23 +163,25 @@ final class Lines {
             if (bufPos >= bufLen && !fill()) {
                 break;
             }
-            // the run of ordinary bytes up to the next special one, copied at once
-            int p = bufPos, end = Math.min(bufLen, p + (LONGEST - len));
+            // the run of ordinary bytes up to the next special one, each widened to a char as it is
+            // checked (a byte above 0x7F too: such a line is decoded as UTF-8 at its end)
+            if (len == chars.length && len < LONGEST) {
+                room(len + 1);
+            }
+            int p = bufPos, end = Math.min(bufLen, p + (Math.min(LONGEST, chars.length) - len));
+            char[] out = chars;
+            int l = len;
             while (p < end) {
-                byte c = buf[p];
-                if ((c < 0x20 && c >= 0) || c == 0x7f) {
+                int u = buf[p] & 0xff;
+                if (u < 0x20 || u == 0x7f) {
                     break;
                 }
-                high |= c;
+                high |= u;
+                out[l++] = (char) u;
                 p++;
             }
             if (p > bufPos) {
-                int run = p - bufPos;
-                if (len + run > lineBytes.length) {
-                    lineBytes = java.util.Arrays.copyOf(lineBytes, Math.min(Math.max(2 * lineBytes.length, len + run), LONGEST));
-                }
-                System.arraycopy(buf, bufPos, lineBytes, len, run);
-                len += run;
+                len = l;
                 bufPos = p;
                 continue;
             }
@@ -194,42 +204,40 @@ final class Lines {
             if (len == LONGEST) {     // a char is at most 3 bytes: already too long
                 throw tooLong();
             }
-            if (len == lineBytes.length) {
-                lineBytes = java.util.Arrays.copyOf(lineBytes, Math.min(2 * len, LONGEST));
+            if (len == chars.length) {
+                room(len + 1);
             }
-            lineBytes[len++] = b;
-            high |= b;
+            chars[len++] = (char) (b & 0xff);
+            high |= b & 0xff;
         }
         this.len = len;
-        ascii = high >= 0;
-        if (ascii) {
-            current = null;           // made by text() if the parser needs it
-            if (len > Limits.MAX_LINE) {
-                throw tooLong();
-            }
-        } else {
-            current = decode(len);
-            if (current.length() > Limits.MAX_LINE) {
-                throw tooLong();
-            }
+        if (high >= 0x80) {           // a byte above 0x7F: the line is UTF-8, decoded in place
+            decode();
+        }
+        if (this.len > Limits.MAX_LINE) {
+            throw tooLong();
         }
         return true;
     }
 
-    private String decode(int len) throws SceneFormatException {
-        ByteBuffer bytes = ByteBuffer.wrap(lineBytes, 0, len);
-        CharBuffer chars = CharBuffer.allocate(len);
+    /** Decodes the line's bytes (held one per char) as UTF-8 into {@link #chars}. */
+    private void decode() throws SceneFormatException {
+        byte[] raw = new byte[len];
+        for (int i = 0; i < len; i++) {
+            raw[i] = (byte) chars[i];
+        }
+        ByteBuffer bytes = ByteBuffer.wrap(raw);
+        CharBuffer decoded = CharBuffer.wrap(chars, 0, len);    // UTF-8 never has more chars than bytes
         utf8.reset();
-        CoderResult r = utf8.decode(bytes, chars, true);
+        CoderResult r = utf8.decode(bytes, decoded, true);
         if (!r.isError()) {
-            r = utf8.flush(chars);
+            r = utf8.flush(decoded);
         }
         if (r.isError()) {
-            int bad = lineBytes[bytes.position()] & 0xff;
+            int bad = raw[bytes.position()] & 0xff;
             throw new SceneFormatException(file, line, String.format("not UTF-8 text (byte 0x%02X); expected a text scene file saved as UTF-8", bad));
         }
-        chars.flip();
-        return chars.toString();
+        len = decoded.position();
     }
 
     private boolean fill() throws IOException {

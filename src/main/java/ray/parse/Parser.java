@@ -2,10 +2,6 @@ package ray.parse;
 
 import java.io.IOException;
 import java.io.InputStream;
-import java.lang.reflect.Constructor;
-import java.lang.reflect.Field;
-import java.lang.reflect.InvocationTargetException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.AccessDeniedException;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
@@ -14,27 +10,28 @@ import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
-import javax.vecmath.Vector3d;
-import ray.Camera;
 import ray.Scene;
-import ray.SceneObject;
-import ray.light.Light;
-import ray.material.Material;
-import ray.surface.Surface;
 
 /**
  * Reads the scene format ({@code scene-format.md}): object headers {@code <ObjectType> <ClassName> [name]},
  * parameter lines {@code <type> <field> <value>} written straight into the object's field, a blank line
  * ending an object, global settings and {@code #} comments. Every mistake is a
  * {@link SceneFormatException} naming the file and line, what was found and what was expected;
- * nothing else escapes (docs/bad-input.md lists them). One parser reads one file; its state (the
- * named objects) lives in the instance.
+ * nothing else escapes (docs/bad-input.md lists them). One parser reads one file.
+ *
+ * <p>The parser reads lines ({@link Lines}), splits each into words ({@link Words}) and decides what
+ * the line is: a header (the class resolved by {@link ClassResolver}), a parameter ({@link Parameters},
+ * reading values with {@link Values}), a global ({@link Globals}, the one table of them) or a mistake.
+ * Objects live and end in {@link SceneObjects}; what is checked once the file is read is {@link PostPass}.
+ * Every line takes this one path: a plain line of a large scene costs no String, by the way the words
+ * and values are read, not by a second grammar.
  */
 public final class Parser {
 
     /** The globals' keywords ({@link Globals}: the one table of them). */
     static final List<String> GLOBALS = Globals.NAMES;
     static final List<String> TYPES = List.of("int", "double", "String", "ref", "Vector3d");
+    static final String[] TYPE_NAMES = TYPES.toArray(new String[0]);
     /** Every word a line can start with, for "did you mean" hints: headers, globals, parameter types. */
     private static final List<String> KEYWORDS = keywords();
 
@@ -47,40 +44,25 @@ public final class Parser {
 
     private final String file;
     private final ClassResolver resolver;
-    private final Fields fields = new Fields();
     private final Scene scene = new Scene();
-    private final Map<String, Object> named = new HashMap<>();
-    private final Map<String, Integer> namedLines = new HashMap<>();
+    private final SceneObjects objects;
+    private final Parameters parameters;
+    private final Words words = new Words();
     private final Map<String, Integer> globalLines = new HashMap<>();
-    /** Scene classes' no-argument constructors, looked up once per file. */
-    private final Map<Class<?>, Constructor<?>> constructors = new HashMap<>();
-    private final List<String> warnings = new ArrayList<>();
-
-    // the object being read
-    private Object current;
-    private String currentType;
-    private int currentLine;
-    private int blankAfter;            // the blank line that ended it (0: still open)
-    private final FieldLines currentFields = new FieldLines();
-    private int cameraLine;
-    private int degenerate;
-    /** Surfaces other surfaces are built from (CSG operands): left out of the scene at the end. */
-    private final java.util.Set<Surface> operands = java.util.Collections.newSetFromMap(new java.util.IdentityHashMap<>());
-    /** Surfaces whose operands are known to lead back to none of them (checked once: {@link OperandGraph}). */
-    private final java.util.Set<Surface> acyclic = java.util.Collections.newSetFromMap(new java.util.IdentityHashMap<>());
-    private int firstDegenerateLine;
-    /** Plausibility warnings ({@link Plausibility}), in the order of their objects. */
-    private final List<String> plausibility = new ArrayList<>();
+    /** The last header's type, class name (also as chars) and class: a large scene repeats one header line after line. */
+    private String lastType, lastClassName;
+    private char[] lastTypeChars, lastClassChars;
+    private Class<?> lastBase, lastClass;
 
     private int line;
     /** The scene file when read from one (an input the output must never replace). */
     private Path source;
-    /** Lines the fast path read (for the test that it is taken: ParserFastPathTest). */
-    private int fastLines;
 
     private Parser(String file, ClassLoader loader) {
         this.file = file;
         this.resolver = new ClassResolver(loader);
+        this.objects = new SceneObjects(file, scene);
+        this.parameters = new Parameters(file, objects);
     }
 
     /** Reads and parses {@code path}; the file is named in messages as given. */
@@ -158,17 +140,6 @@ public final class Parser {
         }
     }
 
-    /** For tests: how many lines of a scene file's bytes the fast path read (the rest took the general path). */
-    static int fastLineCount(byte[] bytes, String name) throws SceneFormatException {
-        Parser p = new Parser(name, Parser.class.getClassLoader());
-        try {
-            p.run(Lines.of(new java.io.ByteArrayInputStream(bytes), name), new ArrayList<>());
-        } catch (IOException e) {
-            throw new AssertionError(e);     // a byte array cannot fail to read
-        }
-        return p.fastLines;
-    }
-
     /** Parses scene text; {@code name} is used in messages. */
     public static Scene parse(String text, String name, List<String> warnings) throws SceneFormatException {
         return parse(text, name, warnings, Parser.class.getClassLoader());
@@ -203,416 +174,115 @@ public final class Parser {
 
     private Scene runLines(Lines lines, List<String> warningsOut) throws SceneFormatException, IOException {
         boolean any = false;
+        Words w = words;
         while (lines.advance()) {
             line = lines.line();
-            if (lines.ascii() && fastLine(lines.bytes(), lines.length())) {
-                any |= lines.length() > 0;
-                fastLines++;
-                continue;
-            }
-            String raw = lines.text();
-            String s = stripComment(raw).strip();
-            if (s.isEmpty()) {
-                if (raw.isBlank() && current != null && blankAfter == 0) {
-                    blankAfter = line;        // a blank line ends the object; a comment line does not
+            if (!w.split(lines.chars(), lines.length())) {
+                if (w.blank) {
+                    objects.blankLine(line);      // a blank line ends the object; a comment line does not
                 }
                 continue;
             }
             any = true;
-            statement(s);
+            statement(w);
         }
         line = Math.max(1, lines.line());
-        endObject();
+        objects.end();
         if (!any) {
             throw error("empty scene file (expected at least Width, Height and a Camera)");
         }
-        Scene s = finish();
-        warningsOut.addAll(warnings);
-        return s;
+        return PostPass.finish(file, scene, objects, globalLines, line, warningsOut);
     }
 
-    /** Drops a comment: a '#' at the start of the line or after whitespace. */
-    private static String stripComment(String s) {
-        for (int i = 0; i < s.length(); i++) {
-            if (s.charAt(i) == '#' && (i == 0 || Character.isWhitespace(s.charAt(i - 1)))) {
-                return s.substring(0, i);
-            }
+    /** The parameter types' places in {@link #TYPES}. */
+    static final int INT = 0, DOUBLE = 1, STRING = 2, REF = 3, VECTOR = 4;
+    private static final char[][] TYPE_CHARS = {"int".toCharArray(), "double".toCharArray(), "String".toCharArray(),
+        "ref".toCharArray(), "Vector3d".toCharArray()};
+
+    /** The place in {@link #TYPES} of the type keyword the line starts with, or -1. */
+    private static int typeOf(Words w) {
+        switch (w.to0 - w.from0) {      // by length first: most lines are Vector3d, double or ref
+            case 8:
+                return w.firstIs(TYPE_CHARS[VECTOR]) ? VECTOR : -1;
+            case 6:
+                return w.firstIs(TYPE_CHARS[DOUBLE]) ? DOUBLE : w.firstIs(TYPE_CHARS[STRING]) ? STRING : -1;
+            case 3:
+                return w.firstIs(TYPE_CHARS[REF]) ? REF : w.firstIs(TYPE_CHARS[INT]) ? INT : -1;
+            default:
+                return -1;
         }
-        return s;
     }
 
-    /** At most three words: the first two, and the rest of the line. {@code s} is stripped and not empty. */
-    static String[] words(String s) {
-        String[] out = new String[3];
-        int n = 0, i = 0, len = s.length();
-        while (n < 2) {
-            int start = i;
-            while (i < len && !Character.isWhitespace(s.charAt(i))) i++;
-            out[n++] = s.substring(start, i);
-            while (i < len && Character.isWhitespace(s.charAt(i))) i++;
-            if (i == len) {
-                return java.util.Arrays.copyOf(out, n);
-            }
-        }
-        out[2] = s.substring(i);
-        return out;
-    }
-
-    private void statement(String s) throws SceneFormatException {
-        String[] w = words(s);
-        String head = w[0];
-        boolean inObject = current != null && blankAfter == 0;
-        if (TYPES.contains(head)) {
-            if (current == null) {
+    private void statement(Words w) throws SceneFormatException {
+        int type = typeOf(w);
+        if (type >= 0) {
+            if (objects.current() == null) {
                 throw error("parameter line outside an object (expected an object header such as 'Surface Sphere' above it, with no blank line between)");
             }
-            if (!inObject) {
-                throw error("parameter line outside an object: the blank line at line " + blankAfter + " ended the " + currentType + " "
-                        + current.getClass().getSimpleName() + " of line " + currentLine + " (expected no blank line inside an object)");
+            if (!objects.open()) {
+                throw error("parameter line outside an object: the blank line at line " + objects.blankAfter() + " ended the "
+                        + objects.describeCurrent() + " (expected no blank line inside an object)");
             }
-            new Parameters(this).parameter(w);
+            parameters.parameter(w, type, line);
             return;
         }
-        if (inObject && !ClassResolver.BASES.containsKey(head) && !GLOBALS.contains(head)) {
-            if (Fields.settableNames(current.getClass()).contains(head)) {
-                throw error(Values.quote(s) + " has no type (expected " + Values.quote(keywordOf(head) + " " + s) + ")");
+        if (w.count == 2 && lastType != null && w.firstIs(lastTypeChars) && Words.same(w.line, w.from1, w.to1, lastClassChars)) {
+            objects.end();               // the header the line before last read: its class is known
+            objects.begin(lastType, lastBase, lastClassName, lastClass, null, line);
+            return;
+        }
+        String head = w.first();
+        if (objects.open() && !ClassResolver.BASES.containsKey(head) && !GLOBALS.contains(head)) {
+            if (Fields.settableNames(objects.current().getClass()).contains(head)) {
+                String s = w.statement();
+                throw error(Values.quote(s) + " has no type (expected " + Values.quote(parameters.keywordOf(head) + " " + s) + ")");
             }
             throw error("unknown parameter type " + Values.quote(head) + " (" + Values.caseHint(head, KEYWORDS)
                     + "expected int, double, String, ref or Vector3d, or a new object header)");
         }
-        endObject();
+        objects.end();
         if (ClassResolver.BASES.containsKey(head)) {
-            header(w, s);
+            header(w, head);
         } else if (GLOBALS.contains(head)) {
-            global(head, w.length > 1 ? s.substring(head.length()).strip() : "");
+            global(head, w.count > 1 ? w.afterFirst() : "");
         } else {
             throw error("unknown keyword " + Values.quote(head) + " (" + Values.caseHint(head, KEYWORDS)
                     + "expected Camera, Surface, Material, Light or a global: " + String.join(", ", GLOBALS) + ")");
         }
     }
 
-    private String keywordOf(String fieldName) {
-        try {
-            return Fields.keyword(fields.find(current.getClass(), fieldName).getType());
-        } catch (Problem p) {
-            return "<type>";
-        }
-    }
-
-    // ---- objects ----
-
-    private void header(String[] w, String s) throws SceneFormatException {
-        String type = w[0];
+    private void header(Words w, String type) throws SceneFormatException {
         String form = "'" + type + " <ClassName> [name]'";
-        if (w.length < 2) {
+        if (w.count < 2) {
             throw error("'" + type + "' needs a class name (expected " + form + ", e.g. '" + type + " "
                     + ClassResolver.builtIns(type).split(",")[0] + "')");
         }
-        if (w.length == 3 && words(w[2]).length > 1) {
-            throw error("too many words in " + Values.quote(s) + " (expected " + form + ")");
+        if (w.count == 3 && !w.restIsOneWord()) {
+            throw error("too many words in " + Values.quote(w.statement()) + " (expected " + form + ")");
         }
+        String className = w.second();
         Class<?> c;
         try {
-            c = resolver.resolve(type, w[1]);
+            c = resolver.resolve(type, className);
         } catch (Problem p) {
             throw error(p.getMessage());
         }
-        String name = w.length == 3 ? w[2] : null;
-        if (name != null && named.containsKey(name)) {
-            throw error("the name " + Values.quote(name) + " is already used by the " + named.get(name).getClass().getSimpleName()
-                    + " at line " + namedLines.get(name) + " (expected a name used once in the file)");
+        String name = w.count == 3 ? w.rest() : null;
+        String used = name == null ? null : objects.nameUse(name);
+        if (used != null) {
+            throw error("the name " + Values.quote(name) + " is already used by " + used + " (expected a name used once in the file)");
         }
-        begin(type, w[1], c, name);
-        lastType = type;
-        lastClassName = w[1];
+        Class<?> base = ClassResolver.BASES.get(type);
+        objects.begin(type, base, className, c, name, line);
+        if (!type.equals(lastType) || !className.equals(lastClassName)) {
+            lastType = type;
+            lastClassName = className;
+            lastTypeChars = type.toCharArray();
+            lastClassChars = className.toCharArray();
+        }
+        lastBase = base;
         lastClass = c;
     }
-
-    /** Creates the object of a header and makes it the one being read. */
-    private void begin(String type, String className, Class<?> c, String name) throws SceneFormatException {
-        Object o;
-        try {
-            Constructor<?> k = constructors.get(c);
-            if (k == null) {
-                k = c.getConstructor();
-                constructors.put(c, k);
-            }
-            o = k.newInstance();
-        } catch (InvocationTargetException e) {
-            throw error("creating " + className + " failed: " + describe(e.getCause()));
-        } catch (ReflectiveOperationException | RuntimeException | LinkageError e) {
-            throw error("creating " + className + " failed: " + describe(e));
-        }
-        current = o;
-        currentType = type;
-        currentLine = line;
-        blankAfter = 0;
-        currentFields.clear();
-        if (name != null) {
-            named.put(name, o);
-            namedLines.put(name, line);
-            scene.name(o, name);
-        }
-    }
-
-    // ---- the fast path: the plain lines a large scene consists of, read from their bytes ----
-
-    /** The last header the general path read: its type, class name and class. */
-    private String lastType, lastClassName;
-    private Class<?> lastClass;
-    /** Per class, the fields plain parameter lines have set: name, Field and type keyword. */
-    private final Map<Class<?>, List<FastField>> fastFields = new HashMap<>();
-    private Class<?> fastClass;
-    /** The fast path's vector, read into this and copied into the field's new Vector3d. */
-    private final double[] xyz = new double[3];
-    private List<FastField> fastClassFields;
-    /** The object name a plain ref line last named and its object (a name never changes its object). */
-    private String lastRefName;
-    private Object lastRefTarget;
-
-    private static final int VECTOR = 0, DOUBLE = 1, REF = 2;
-    private static final String[] FAST_TYPES = {"Vector3d", "double", "ref"};
-
-    private record FastField(String name, Field field, String keyword) {
-    }
-
-    /**
-     * Reads an ASCII line [0, n) of {@code b} when it is one of the kinds a large scene consists of,
-     * written plainly (printable ASCII and single spaces, no comment, nothing to strip): a blank line,
-     * an unnamed object header of a class the general path has already read a header of, or a
-     * Vector3d, double or ref parameter of the object being read. Does exactly what the general path
-     * does with the same line, without a String per word. Returns false, having changed nothing, for
-     * any other line and for any line with a mistake: the general path then reads it and reports it.
-     */
-    private boolean fastLine(byte[] b, int n) throws SceneFormatException {
-        if (n == 0) {
-            if (current != null && blankAfter == 0) {
-                blankAfter = line;        // a blank line ends the object
-            }
-            return true;
-        }
-        if (b[0] == ' ' || b[n - 1] == ' ') {
-            return false;
-        }
-        int s1 = -1, s2 = -1;
-        for (int i = 0; i < n; i++) {
-            byte c = b[i];
-            if (c == ' ') {
-                if (b[i - 1] == ' ') {
-                    return false;
-                }
-                if (s1 < 0) {
-                    s1 = i;
-                } else if (s2 < 0) {
-                    s2 = i;
-                }
-            } else if (c < 0x21 || c == 0x7f || c == '#') {     // ASCII only: no byte is above 0x7f
-                return false;
-            }
-        }
-        if (s1 < 0) {
-            return false;
-        }
-        if (s2 < 0) {                     // two words: a header such as "Surface Triangle"
-            if (lastType == null || !equals(b, 0, s1, lastType) || !equals(b, s1 + 1, n, lastClassName)) {
-                return false;
-            }
-            endObject();
-            begin(lastType, lastClassName, lastClass, null);
-            return true;
-        }
-        if (current == null || blankAfter != 0) {
-            return false;
-        }
-        int kind = equals(b, 0, s1, "Vector3d") ? VECTOR : equals(b, 0, s1, "double") ? DOUBLE : equals(b, 0, s1, "ref") ? REF : -1;
-        if (kind < 0) {
-            return false;
-        }
-        FastField ff = fastField(b, s1 + 1, s2);
-        if (ff == null || !ff.keyword.equals(FAST_TYPES[kind]) || currentFields.contains(ff.name)) {
-            return false;
-        }
-        Field f = ff.field;
-        int v0 = s2 + 1;
-        Object v;
-        if (kind == VECTOR) {
-            double[] xyz = this.xyz;
-            if (!Tokens.canonicalVector(b, v0, n, xyz)) {
-                return false;
-            }
-            v = new Vector3d(xyz[0], xyz[1], xyz[2]);
-        } else if (kind == DOUBLE) {
-            Class<?> ft = f.getType();
-            if ((ft != double.class && ft != Double.class) || !Tokens.isDecimal(b, v0, n)) {
-                return false;
-            }
-            double d = Tokens.parseDecimal(b, v0, n);
-            if (!Double.isFinite(d)) {
-                return false;
-            }
-            v = d;
-        } else {                          // ref: one word, the name of an earlier object
-            if (lastRefName == null || !equals(b, v0, n, lastRefName)) {
-                for (int i = v0; i < n; i++) {
-                    if (b[i] == ' ') {
-                        return false;
-                    }
-                }
-                String name = new String(b, v0, n - v0, StandardCharsets.ISO_8859_1);
-                Object target = named.get(name);
-                if (target == null) {
-                    return false;
-                }
-                lastRefName = name;
-                lastRefTarget = target;
-            }
-            if (lastRefTarget == current || !f.getType().isInstance(lastRefTarget)) {
-                return false;
-            }
-            v = lastRefTarget;
-        }
-        try {
-            f.set(current, v);
-        } catch (IllegalAccessException | RuntimeException e) {
-            return false;                 // the general path sets it again and reports what fails
-        }
-        currentFields.putIfAbsent(ff.name, line);
-        return true;
-    }
-
-    /** The settable field [from, to) of {@code b} names in the current object's class, or null. */
-    private FastField fastField(byte[] b, int from, int to) {
-        Class<?> c = current.getClass();
-        if (c != fastClass) {
-            fastClass = c;
-            fastClassFields = fastFields.computeIfAbsent(c, k -> new ArrayList<>());
-        }
-        for (int i = 0; i < fastClassFields.size(); i++) {   // indexed: an iterator per line is garbage
-            FastField e = fastClassFields.get(i);
-            if (equals(b, from, to, e.name)) {
-                return e;
-            }
-        }
-        String name = new String(b, from, to - from, StandardCharsets.ISO_8859_1);
-        Field f;
-        try {
-            f = fields.find(c, name);
-        } catch (Problem p) {
-            return null;
-        }
-        String keyword = Fields.keyword(f.getType());
-        if (keyword == null) {
-            return null;
-        }
-        FastField e = new FastField(name, f, keyword);
-        fastClassFields.add(e);
-        return e;
-    }
-
-    /** Whether bytes [from, to) of {@code b} are the chars of {@code s} (all ASCII). */
-    private static boolean equals(byte[] b, int from, int to, String s) {
-        if (to - from != s.length()) {
-            return false;
-        }
-        for (int i = 0; i < to - from; i++) {
-            if (b[from + i] != s.charAt(i)) {
-                return false;
-            }
-        }
-        return true;
-    }
-
-    /** Ends the current object: validates it (init) and adds it to the scene. Problems are reported at its header. */
-    private void endObject() throws SceneFormatException {
-        if (current == null) {
-            return;
-        }
-        Object o = current;
-        current = null;
-        int saved = line;
-        line = currentLine;
-        try {
-            ((SceneObject) o).init();
-            if (o instanceof ReadsFiles r) {
-                readFiles(o, r);
-            } else if (o instanceof ray.surface.Mesh m) {   // geometry reads no files: the parser reads its OBJ
-                readFiles(o, folder -> ObjFile.loadInto(m, folder));
-            }
-        } catch (IllegalArgumentException | IllegalStateException e) {
-            throw error(currentType + " " + o.getClass().getSimpleName() + ": " + e.getMessage());
-        } catch (RuntimeException | LinkageError | AssertionError | StackOverflowError e) {
-            throw error(o.getClass().getSimpleName() + ".init() failed: " + describe(e));
-        }
-        for (String[] w : Plausibility.of(o)) {
-            int at = currentFields.lineOf(w[0]);
-            plausibility.add(file + ":" + (at > 0 ? at : line) + ": warning: " + o.getClass().getSimpleName() + " " + w[1]);
-        }
-        switch (currentType) {
-            case "Camera":
-                if (scene.camera != null) {
-                    throw error("a second camera (first at line " + cameraLine + "; expected one camera per scene)");
-                }
-                scene.camera = (Camera) o;
-                cameraLine = line;
-                break;
-            case "Surface":
-                Surface s = (Surface) o;
-                if (s.material == null) {
-                    throw error(o.getClass().getSimpleName() + " has no material (expected 'ref material <name>' in the object)");
-                }
-                boolean flat;
-                try {
-                    flat = s.isDegenerate();
-                } catch (RuntimeException | LinkageError e) {
-                    throw error(o.getClass().getSimpleName() + ".isDegenerate() failed: " + describe(e));
-                }
-                if (flat && degenerate++ == 0) {
-                    firstDegenerateLine = line;
-                }
-                try {
-                    List<Surface> ops = s.operands();
-                    if (!ops.isEmpty()) {
-                        String cycle = OperandGraph.cycle(s, acyclic);
-                        if (cycle != null) {
-                            throw error(cycle);
-                        }
-                        operands.addAll(ops);
-                    }
-                } catch (RuntimeException | LinkageError | StackOverflowError e) {
-                    throw error(o.getClass().getSimpleName() + ".operands() failed: " + describe(e));
-                }
-                scene.surfaces.add(s);
-                break;
-            case "Material":
-                scene.materials.add((Material) o);
-                break;
-            default:
-                scene.lights.add((Light) o);
-        }
-        line = saved;
-    }
-
-    /** Lets an object read its own files; a mistake in one is reported at that file's line, naming this object. */
-    private void readFiles(Object o, ReadsFiles r) throws SceneFormatException {
-        try {
-            r.readFiles(folder());
-        } catch (SceneFormatException e) {
-            throw new SceneFormatException(e.file(), e.line(), e.problem() + " (read for the " + currentType + " "
-                    + o.getClass().getSimpleName() + " at " + file + ":" + line + ")");
-        }
-    }
-
-    /** The scene file's folder (the working directory for a scene without one, or read from text). */
-    private Path folder() {
-        try {
-            Path p = Path.of(file).getParent();
-            return p == null ? Path.of("") : p;
-        } catch (java.nio.file.InvalidPathException e) {
-            return Path.of("");
-        }
-    }
-
-    // ---- globals ----
 
     private void global(String key, String value) throws SceneFormatException {
         Globals g = Globals.of(key);
@@ -630,66 +300,7 @@ public final class Parser {
         }
     }
 
-    private Scene finish() throws SceneFormatException {
-        for (String side : new String[] {"Width", "Height"}) {
-            if (!globalLines.containsKey(side)) {
-                throw error("no " + side + " (expected '" + side + " <pixels>', e.g. '" + side + (side.equals("Width") ? " 640')" : " 480')"));
-            }
-        }
-        if (scene.camera == null) {
-            throw error("no camera (expected a 'Camera Camera' object)");
-        }
-        // the pixel limit of the scene's own sampler (a film costs more than the grid; the render checks
-        // again with a sampler the command line or the viewer chose: ray.render.Renderer)
-        String tooLarge = ray.settings.PixelBudget.refusal(scene.width, scene.height, scene.sampler);
-        if (tooLarge != null) {
-            line = globalLines.get("Width");
-            throw error(tooLarge);
-        }
-        if (Double.isNaN(scene.camera.aspect)) {
-            scene.camera.aspect = (double) scene.width / scene.height;
-            scene.camera.recalculate();
-        }
-        if (!operands.isEmpty()) {
-            List<Surface> rendered = new ArrayList<>(scene.surfaces.size());
-            for (Surface s : scene.surfaces) {
-                if (!operands.contains(s)) {
-                    rendered.add(s);
-                }
-            }
-            scene.surfaces = rendered;
-        }
-        warnings.addAll(plausibility);
-        if (degenerate > 0) {
-            warnings.add(file + ":" + firstDegenerateLine + ": warning: zero-area triangle, never hit"
-                    + (degenerate > 1 ? " (and " + (degenerate - 1) + " more)" : ""));
-        }
-        return scene;
-    }
-
-    // ---- shared with Parameters ----
-
-    Object current() {
-        return current;
-    }
-
-    Fields fields() {
-        return fields;
-    }
-
-    FieldLines currentFields() {
-        return currentFields;
-    }
-
-    Map<String, Object> named() {
-        return named;
-    }
-
-    int line() {
-        return line;
-    }
-
-    SceneFormatException error(String message) {
+    private SceneFormatException error(String message) {
         return new SceneFormatException(file, line, message);
     }
 

@@ -22,10 +22,10 @@ final class Plausibility {
 
     /** The problems of {@code o}: pairs of (field name, message after the class name). */
     static List<String[]> of(Object o) {
-        List<String[]> out = new ArrayList<>(0);
         if (!(o instanceof Material) && !(o instanceof Light)) {
-            return out;
+            return List.of();      // a surface or camera: nothing to check, nothing made (a mesh scene has 100k of them)
         }
+        List<String[]> out = new ArrayList<>(0);
         for (Class<?> c = o.getClass(); c != null && c != Object.class; c = c.getSuperclass()) {
             for (Field f : c.getDeclaredFields()) {
                 if (!Modifier.isPublic(f.getModifiers()) || Modifier.isStatic(f.getModifiers())) {

@@ -1,15 +1,15 @@
 package ray.parse;
 
 import java.math.BigInteger;
-import java.util.ArrayList;
 import java.util.Collection;
-import java.util.List;
 import javax.vecmath.Vector3d;
 
 /**
  * The values of a scene file: whole numbers, finite decimal numbers, {@code [x y z]} vectors, and the
- * quoting of what was found in messages. Nothing here uses a regular expression or recursion, so
- * the cost is linear in the (already bounded) line length.
+ * quoting of what was found in messages. Decimals and vectors are read from a range of a line's chars
+ * (what {@link Words} found), making no String unless a message needs one; the String forms are for
+ * globals and OBJ files. Nothing here uses a regular expression or recursion, so the cost is linear in
+ * the (already bounded) line length.
  */
 final class Values {
 
@@ -90,16 +90,20 @@ final class Values {
 
     /** A finite decimal number; NaN, infinities, hex and overflow are refused. */
     static double parseDouble(String s, String what) throws Problem {
+        return parseDouble(s.toCharArray(), 0, s.length(), what);
+    }
+
+    /** {@link #parseDouble(String, String)} of chars [from, to) of {@code c}. */
+    static double parseDouble(char[] c, int from, int to, String what) throws Problem {
         String expected = " (expected a decimal number such as 1.5 or -2e3)";
-        if (isNonFiniteWord(s)) {
-            throw new Problem(quote(s) + " is not a finite number for " + what + expected);
+        double d = Tokens.decimal(c, from, to);
+        if (Double.isNaN(d)) {
+            String s = new String(c, from, to - from);
+            throw new Problem(quote(s) + (isNonFiniteWord(s) ? " is not a finite number for " : " is not a number for ") + what + expected);
         }
-        if (!isDecimal(s)) {
-            throw new Problem(quote(s) + " is not a number for " + what + expected);
-        }
-        double d = Tokens.parseDecimal(s);
         if (!Double.isFinite(d)) {
-            throw new Problem(quote(s) + " is too large for " + what + " (expected a finite number, at most about 1.8e308)");
+            throw new Problem(quote(new String(c, from, to - from)) + " is too large for " + what
+                    + " (expected a finite number, at most about 1.8e308)");
         }
         return d;
     }
@@ -112,23 +116,12 @@ final class Values {
 
     /** [+-] digits [. digits] [e [+-] digits], or starting with the point; no NaN, Infinity, hex or suffix. */
     static boolean isDecimal(String s) {
-        int i = 0, n = s.length();
-        if (i < n && (s.charAt(i) == '+' || s.charAt(i) == '-')) i++;
-        int digits = 0;
-        while (i < n && isDigit(s.charAt(i))) { i++; digits++; }
-        if (i < n && s.charAt(i) == '.') {
-            i++;
-            while (i < n && isDigit(s.charAt(i))) { i++; digits++; }
-        }
-        if (digits == 0) return false;
-        if (i < n && (s.charAt(i) == 'e' || s.charAt(i) == 'E')) {
-            i++;
-            if (i < n && (s.charAt(i) == '+' || s.charAt(i) == '-')) i++;
-            int e = 0;
-            while (i < n && isDigit(s.charAt(i))) { i++; e++; }
-            if (e == 0) return false;
-        }
-        return i == n;
+        return isDecimal(s.toCharArray(), 0, s.length());
+    }
+
+    /** {@link #isDecimal(String)} of chars [from, to) of {@code s}. */
+    static boolean isDecimal(char[] s, int from, int to) {
+        return !Double.isNaN(Tokens.decimal(s, from, to));
     }
 
     private static boolean isDigit(char c) {
@@ -137,59 +130,80 @@ final class Values {
 
     /** {@code [x y z]}: three finite numbers in brackets, separated by spaces or commas. */
     static Vector3d parseVector(String s, String what) throws Problem {
+        return parseVector(s.toCharArray(), 0, s.length(), what);
+    }
+
+    /** {@link #parseVector(String, String)} of chars [from, to) of {@code c}. */
+    static Vector3d parseVector(char[] c, int from, int to, String what) throws Problem {
         String expected = " (expected [x y z], three numbers in brackets)";
-        if (!s.startsWith("[")) {
-            throw new Problem(malformed(s, what) + "missing '['" + expected);
+        if (to == from || c[from] != '[') {
+            throw new Problem(malformed(c, from, to, what) + "missing '['" + expected);
         }
-        if (s.length() < 2 || !s.endsWith("]")) {
-            throw new Problem(malformed(s, what) + "missing ']'" + expected);
+        if (to - from < 2 || c[to - 1] != ']') {
+            throw new Problem(malformed(c, from, to, what) + "missing ']'" + expected);
         }
-        List<String> parts = new ArrayList<>(3);
-        int i = 1, end = s.length() - 1;
-        while (i < end) {
-            while (i < end && separator(s.charAt(i))) i++;
+        int x0 = 0, x1 = 0, y0 = 0, y1 = 0, z0 = 0, z1 = 0, parts = 0;
+        int i = from + 1, end = to - 1;
+        while (i < end) {      // separators: commas and whitespace (tested in line: the JIT's first tier inlines one level)
+            while (i < end && (c[i] == ',' || Words.isSpace(c[i]))) i++;
             int start = i;
-            while (i < end && !separator(s.charAt(i))) i++;
+            // a number's chars (digits . - e) are above ',' and ASCII: no separator, told with two comparisons
+            while (i < end && (c[i] > ',' && c[i] < '\u0080' || c[i] != ',' && !Words.isSpace(c[i]))) i++;
             if (i > start) {
-                if (parts.size() == 3) {       // count the rest without keeping it
+                if (parts == 3) {       // count the rest without keeping it
                     int more = 1;
                     while (i < end) {
-                        while (i < end && separator(s.charAt(i))) i++;
+                        while (i < end && (c[i] == ',' || Words.isSpace(c[i]))) i++;
                         if (i < end) more++;
-                        while (i < end && !separator(s.charAt(i))) i++;
+                        while (i < end && c[i] != ',' && !Words.isSpace(c[i])) i++;
                     }
-                    throw new Problem(malformed(s, what) + "found " + (3 + more) + " numbers" + expected);
+                    throw new Problem(malformed(c, from, to, what) + "found " + (3 + more) + " numbers" + expected);
                 }
-                parts.add(s.substring(start, i));
+                if (parts == 0) {
+                    x0 = start;
+                    x1 = i;
+                } else if (parts == 1) {
+                    y0 = start;
+                    y1 = i;
+                } else {
+                    z0 = start;
+                    z1 = i;
+                }
+                parts++;
             }
         }
-        if (parts.size() != 3) {
-            throw new Problem(malformed(s, what) + "found " + parts.size() + (parts.size() == 1 ? " number" : " numbers") + expected);
+        if (parts != 3) {
+            throw new Problem(malformed(c, from, to, what) + "found " + parts + (parts == 1 ? " number" : " numbers") + expected);
         }
-        double[] v = new double[3];
-        for (int k = 0; k < 3; k++) {
-            String p = parts.get(k);
-            if (isNonFiniteWord(p)) {
-                throw new Problem(malformed(s, what) + quote(p) + " is not a finite number" + expected);
-            }
-            if (!isDecimal(p)) {
-                throw new Problem(malformed(s, what) + quote(p) + " is not a number" + expected);
-            }
-            v[k] = Tokens.parseDecimal(p);
-            if (!Double.isFinite(v[k])) {
-                throw new Problem(malformed(s, what) + quote(p) + " is too large (expected finite numbers, at most about 1.8e308)");
-            }
+        double x = Tokens.decimal(c, x0, x1), y = Tokens.decimal(c, y0, y1), z = Tokens.decimal(c, z0, z1);
+        if (Double.isFinite(x) && Double.isFinite(y) && Double.isFinite(z)) {     // NaN: not a decimal
+            return new Vector3d(x, y, z);
         }
-        return new Vector3d(v[0], v[1], v[2]);
+        // a number is wrong: the first one, in order, says what
+        component(c, x0, x1, from, to, what, expected);
+        component(c, y0, y1, from, to, what, expected);
+        component(c, z0, z1, from, to, what, expected);
+        throw new AssertionError("a vector component that is wrong was not reported");
+    }
+
+    /** One number [p0, p1) of the vector [from, to), or the Problem that it is not a finite decimal. */
+    private static double component(char[] c, int p0, int p1, int from, int to, String what, String expected) throws Problem {
+        double v = Tokens.decimal(c, p0, p1);
+        if (Double.isNaN(v)) {
+            String p = new String(c, p0, p1 - p0);
+            throw new Problem(malformed(c, from, to, what) + quote(p) + (isNonFiniteWord(p) ? " is not a finite number" : " is not a number")
+                    + expected);
+        }
+        if (!Double.isFinite(v)) {
+            throw new Problem(malformed(c, from, to, what) + quote(new String(c, p0, p1 - p0))
+                    + " is too large (expected finite numbers, at most about 1.8e308)");
+        }
+        return v;
     }
 
     /** The start of every message about a malformed vector (made only when one is reported). */
-    private static String malformed(String s, String what) {
-        return "malformed vector " + quote(s) + " for " + what + ": ";
-    }
-
-    private static boolean separator(char c) {
-        return c == ',' || Character.isWhitespace(c);
+    private static String malformed(char[] c, int from, int to, String what) {
+        return "malformed vector " + quote(new String(c, from, to - from)) + " for " + what + ": ";
     }
 
     /** The option equal to {@code s} but for case, as a "did you mean" hint ending in "; ", or "". */

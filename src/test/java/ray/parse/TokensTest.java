@@ -1,22 +1,25 @@
 package ray.parse;
 
-import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertDoesNotThrow;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 
-import java.nio.charset.StandardCharsets;
 import java.util.Random;
+import java.util.regex.Pattern;
 import javax.vecmath.Vector3d;
 import org.junit.jupiter.api.Test;
 
 /**
- * The parser's fast number reading must give exactly what {@code Values.isDecimal},
- * {@code Double.parseDouble} and {@code Values.parseVector} give; any difference would change what a
- * scene means.
+ * The parser's number reading must accept exactly the scene format's decimals and give exactly what
+ * {@code Double.parseDouble} gives; any difference would change what a scene means. Numbers are read
+ * where they stand in a line, so every check reads them inside other chars.
  */
 class TokensTest {
 
-    private static final String ALPHABET = "ab, \t\u000B\f\r\u001F\u00A0#[]-+.e0123456789";
+    /** The scene format's decimal, written as a regular expression: the oracle isDecimal is checked against. */
+    private static final Pattern DECIMAL = Pattern.compile("[+-]?([0-9]+\\.?[0-9]*|\\.[0-9]+)([eE][+-]?[0-9]+)?");
+
+    private static final String ALPHABET = "ab, \t\u000B\f\r\u001F\u00A0#[]-+.eE0123456789";
 
     private static String randomString(Random r, int maxLen) {
         int n = r.nextInt(maxLen + 1);
@@ -27,26 +30,31 @@ class TokensTest {
         return b.toString();
     }
 
-    /** The String and the byte forms both give parseDouble's bits; the byte form reads the number inside other bytes. */
-    private static void assertBitIdentical(String s) {
-        long expected = Double.doubleToRawLongBits(Double.parseDouble(s));
-        assertEquals(expected, Double.doubleToRawLongBits(Tokens.parseDecimal(s)), s);
-        byte[] b = ("x " + s + " y").getBytes(StandardCharsets.US_ASCII);
-        assertEquals(true, Tokens.isDecimal(b, 2, 2 + s.length()), s);
-        assertEquals(expected, Double.doubleToRawLongBits(Tokens.parseDecimal(b, 2, 2 + s.length())), s);
+    /** {@code s} inside other chars, as a number stands in a line: "x s y". */
+    private static char[] inLine(String s) {
+        return ("x " + s + " y").toCharArray();
     }
 
-    /** The byte form of isDecimal accepts exactly what Values.isDecimal accepts. */
+    private static void assertBitIdentical(String s) {
+        long expected = Double.doubleToRawLongBits(Double.parseDouble(s));
+        char[] c = inLine(s);
+        assertEquals(true, Values.isDecimal(c, 2, 2 + s.length()), s);
+        assertEquals(expected, Double.doubleToRawLongBits(Tokens.decimal(c, 2, 2 + s.length())), s);
+    }
+
     @Test
-    void byteIsDecimalAgreesWithValuesIsDecimal() {
+    void isDecimalAcceptsExactlyTheFormatsDecimals() {
         Random r = new Random(7);
         for (int k = 0; k < 200_000; k++) {
             String s = randomString(r, 6);
-            byte[] b = ("#" + s + "#").getBytes(StandardCharsets.UTF_8);
-            if (b.length != s.length() + 2) {
-                continue;                       // not ASCII: the byte path never sees it
+            boolean expected = DECIMAL.matcher(s).matches();
+            assertEquals(expected, Values.isDecimal(inLine(s), 2, 2 + s.length()), () -> "'" + s + "'");
+            assertEquals(expected, Values.isDecimal(s), () -> "'" + s + "'");
+            if (expected) {
+                assertBitIdentical(s);
+            } else {
+                assertEquals(true, Double.isNaN(Tokens.decimal(inLine(s), 2, 2 + s.length())), s);
             }
-            assertEquals(Values.isDecimal(s), Tokens.isDecimal(b, 1, 1 + s.length()), () -> "'" + s + "'");
         }
     }
 
@@ -56,7 +64,9 @@ class TokensTest {
         Random r = new Random(2003);
         String[] fixed = {"0", "-0", "+0.0", "1", "-1.5", ".5", "5.", "0.1", "0.3", "1e22", "1e23", "9007199254740993",
             "123456789012345", "1234567890123456", "0.000000000000000000000001", "1.7976931348623157e308", "4.9e-324",
-            "2.2250738585072014E-308", "1e-22", "1e-23", "999999999999999e22", "0.12345", "-12.345e-3", "00000000000000000001.5"};
+            "2.2250738585072014E-308", "1e-22", "1e-23", "999999999999999e22", "0.12345", "-12.345e-3", "00000000000000000001.5",
+            "0e99999", "-0e-400", "-0.0e-30", "1e99999", "-1e-99999", "1234567890123456789e-5", "0.0000000000000000000000000001234",
+            "1e0022", "1e00022", "5.e-3", ".5E+2"};
         for (String s : fixed) {
             assertBitIdentical(s);
         }
@@ -75,44 +85,45 @@ class TokensTest {
                 b.append(r.nextInt(40));
             }
             String s = b.toString();
-            if (!Values.isDecimal(s)) {
+            if (!DECIMAL.matcher(s).matches()) {
                 continue;
             }
             assertBitIdentical(s);
         }
     }
 
+    /**
+     * A vector is three decimals in brackets, separated by any run of commas and whitespace: read
+     * inside a line, it is each part's parseDouble, bit for bit; anything else is refused.
+     */
     @Test
-    void canonicalVectorReadsOnlyPlainVectorsAndReadsThemExactly() {
+    void parseVectorReadsThreeDecimalsBetweenAnySeparators() {
         Random r = new Random(12);
         String alphabet = "[] ,\t-.e0123456789";
-        int taken = 0;
+        int read = 0;
         for (int k = 0; k < 300_000; k++) {
             int n = 2 + r.nextInt(14);
             StringBuilder b = new StringBuilder("[");
             for (int i = 0; i < n; i++) b.append(alphabet.charAt(r.nextInt(alphabet.length())));
             b.append(']');
             String s = b.toString();
-            double[] v = canonicalVector(s);
-            if (v == null) continue;
-            taken++;
-            // what the general path reads: the same three numbers, bit for bit
-            Vector3d g = assertDoesNotThrow(() -> Values.parseVector(s, "v"), s);
-            assertEquals(Double.doubleToRawLongBits(g.x), Double.doubleToRawLongBits(v[0]), s);
-            assertEquals(Double.doubleToRawLongBits(g.y), Double.doubleToRawLongBits(v[1]), s);
-            assertEquals(Double.doubleToRawLongBits(g.z), Double.doubleToRawLongBits(v[2]), s);
+            String[] parts = java.util.Arrays.stream(s.substring(1, s.length() - 1).split("[\\s,]+"))
+                    .filter(p -> !p.isEmpty()).toArray(String[]::new);
+            boolean valid = parts.length == 3;
+            for (int i = 0; valid && i < 3; i++) {
+                valid = DECIMAL.matcher(parts[i]).matches() && Double.isFinite(Double.parseDouble(parts[i]));
+            }
+            char[] c = inLine(s);
+            if (!valid) {
+                assertThrows(Problem.class, () -> Values.parseVector(c, 2, 2 + s.length(), "v"), s);
+                continue;
+            }
+            read++;
+            Vector3d v = assertDoesNotThrow(() -> Values.parseVector(c, 2, 2 + s.length(), "v"), s);
+            assertEquals(Double.doubleToRawLongBits(Double.parseDouble(parts[0])), Double.doubleToRawLongBits(v.x), s);
+            assertEquals(Double.doubleToRawLongBits(Double.parseDouble(parts[1])), Double.doubleToRawLongBits(v.y), s);
+            assertEquals(Double.doubleToRawLongBits(Double.parseDouble(parts[2])), Double.doubleToRawLongBits(v.z), s);
         }
-        assertEquals(true, taken > 100, "some random vectors are plain");
-        assertArrayEquals(new double[] {1, -2.5, 3e-3}, canonicalVector("[1 -2.5 3e-3]"));
-        assertEquals(null, canonicalVector("[1, 2, 3]"));      // commas: the general path's job
-        assertEquals(null, canonicalVector("[1 2 1e999]"));    // too large: the general path reports it
-        assertEquals(null, canonicalVector("[ 1 2 3]"));       // untidy: the general path's job
-        assertEquals(null, canonicalVector("[1 2 3 4]"));      // four numbers: the general path reports it
-    }
-
-    /** Tokens.canonicalVector of {@code s} written in the middle of other bytes, as in a line. */
-    private static double[] canonicalVector(String s) {
-        byte[] b = ("Vector3d v " + s + "").getBytes(StandardCharsets.US_ASCII);
-        return Tokens.canonicalVector(b, 11, b.length);
+        assertEquals(true, read > 100, "some random vectors are valid: " + read);
     }
 }

@@ -14,11 +14,11 @@ import ray.Scene;
 import ray.surface.Triangle;
 
 /**
- * Plain ASCII lines read from bytes (a file) take the parser's fast path; text given as a String
- * always takes the general path. The same scene written untidily, or read by the general path alone,
- * must mean exactly the same, and every mistake must get the same message on the same line.
+ * A scene read from bytes (a file: ASCII lines widened as they are scanned, others decoded as UTF-8)
+ * and from a String (text) must mean exactly the same, written plainly or untidily, and every mistake
+ * must get the same message on the same line.
  */
-class ParserFastPathTest {
+class ParserBytesAndTextTest {
 
     private static final String PLAIN = String.join("\n",
             "Width 4", "Height 3", "", "Camera Camera", "Vector3d eye [0 0 5]", "double yFOV 40", "",
@@ -78,7 +78,7 @@ class ParserFastPathTest {
         {"Light PointLight", "Vector3d position [1 2 3]", "Vector3d intensity [5 5 5]"},
     };
 
-    /** Random scenes of plain, untidy and wrong lines: the byte fast path, the String path and the messages agree. */
+    /** Random scenes of plain, untidy and wrong lines: bytes, text and the messages agree. */
     @Test
     void randomScenesReadTheSameOnEveryPath() throws Exception {
         Random r = new Random(99);
@@ -105,7 +105,7 @@ class ParserFastPathTest {
         assertEquals(true, ok > 100, "some random scenes should be valid: " + ok);
     }
 
-    /** Refs the fast path must leave to the general path: to the object itself, to an object of the wrong kind, to nothing. */
+    /** Wrong refs (to the object itself, to an object of the wrong kind, to nothing) after right ones: the full message. */
     @Test
     void plainRefsThatAreWrongGetTheGeneralMessage() {
         String head = "Width 4\nHeight 3\n\nCamera Camera\n\nMaterial Diffuse d\n\nSurface Sphere s\nref material d\n\n";
