@@ -61,7 +61,12 @@ final class Fields {
 
     private List<Entry> entries(Class<?> c) {
         if (c != lastClass) {
-            lastEntries = cache.computeIfAbsent(c, k -> new ArrayList<>());
+            List<Entry> e = cache.get(c);      // get/put, not computeIfAbsent: no lambda on the parse path (StartupClassesTest)
+            if (e == null) {
+                e = new ArrayList<>();
+                cache.put(c, e);
+            }
+            lastEntries = e;
             lastClass = c;
         }
         return lastEntries;

@@ -152,7 +152,12 @@ final class SceneObjects {
             if (o instanceof ReadsFiles r) {
                 readFiles(o, r);
             } else if (o instanceof ray.surface.Mesh m) {   // geometry reads no files: the parser reads its OBJ
-                readFiles(o, folder -> ObjFile.loadInto(m, folder));
+                readFiles(o, new ReadsFiles() {                // a class, not a lambda: no lambda on the parse path
+                    @Override
+                    public void readFiles(Path folder) throws SceneFormatException {
+                        ObjFile.loadInto(m, folder);
+                    }
+                });
             }
         } catch (IllegalArgumentException | IllegalStateException e) {
             throw error(line, currentType + " " + o.getClass().getSimpleName() + ": " + e.getMessage());
