@@ -17,9 +17,9 @@ import java.nio.charset.StandardCharsets;
  * it is parsed, so an endless or huge input costs at most one line of memory.
  *
  * <p>Every line, from text or from bytes, is handed on the same way: its chars in one reused array
- * ({@link #chars()}, {@link #length()}), with no String made for it unless someone asks for one
- * ({@link #text()}, for a message). A plain ASCII line is widened byte by byte as it is scanned for
- * control characters; only a line with a byte above 0x7F goes through the UTF-8 decoder.
+ * ({@link #chars()}, {@link #length()}), with no String made for it. A plain ASCII line is widened
+ * byte by byte as it is scanned for control characters; only a line with a byte above 0x7F goes
+ * through the UTF-8 decoder.
  */
 final class Lines {
 
@@ -41,8 +41,6 @@ final class Lines {
     /** The line last read: chars [0, len) of {@code chars} (reused from line to line). */
     private char[] chars = new char[256];
     private int len;
-    /** The line last read as a String, once {@link #text()} made it; null until then. */
-    private String current;
 
     private int line;
 
@@ -96,7 +94,6 @@ final class Lines {
      * {@link #chars()} [0, {@link #length()}), valid until the next call.
      */
     boolean advance() throws SceneFormatException, IOException {
-        current = null;
         return text != null ? nextFromText() : nextFromBytes();
     }
 
@@ -108,14 +105,6 @@ final class Lines {
     /** How many of {@link #chars()} the line has. */
     int length() {
         return len;
-    }
-
-    /** The line last read as a String (made once, when asked for). */
-    String text() {
-        if (current == null) {
-            current = new String(chars, 0, len);
-        }
-        return current;
     }
 
     /** Room for {@code n} chars in {@link #chars}, keeping those it holds. */

@@ -23,6 +23,16 @@ final class Tokens {
      * else, once its shape is checked, goes to {@code parseDouble}.
      */
     static double decimal(char[] s, int from, int to) {
+        return read(s, from, to, true);
+    }
+
+    /** Whether chars [from, to) of {@code s} are one of the format's decimals (the shape alone: no value is worked out). */
+    static boolean isDecimal(char[] s, int from, int to) {
+        return !Double.isNaN(read(s, from, to, false));
+    }
+
+    /** The one reader of both: NaN when not a decimal; else the value, or 0 when {@code value} is false. */
+    private static double read(char[] s, int from, int to, boolean value) {
         int i = from;
         boolean neg = false;
         if (i < to && (s[i] == '+' || s[i] == '-')) {
@@ -79,6 +89,9 @@ final class Tokens {
         }
         if (i != to) {
             return Double.NaN;
+        }
+        if (!value) {
+            return 0;
         }
         if (slow || exp < -22 || exp > 22) {
             return m == 0 && !slow ? (neg ? -0.0 : 0.0) : Double.parseDouble(new String(s, from, to - from));

@@ -121,7 +121,7 @@ final class Values {
 
     /** {@link #isDecimal(String)} of chars [from, to) of {@code s}. */
     static boolean isDecimal(char[] s, int from, int to) {
-        return !Double.isNaN(Tokens.decimal(s, from, to));
+        return Tokens.isDecimal(s, from, to);
     }
 
     private static boolean isDigit(char c) {
