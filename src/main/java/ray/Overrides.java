@@ -1,7 +1,5 @@
 package ray;
 
-import java.util.function.Predicate;
-
 /**
  * Which class in a hierarchy declares a method, for a built-in's fast path: the fast form (a material's
  * allocation-free {@code shade}, a light's {@code sample}) stands in for the framework's form only when
@@ -32,13 +30,51 @@ public final class Overrides {
         return below != above && above.isAssignableFrom(below);
     }
 
-    /** A per-class answer cached for the class's lifetime. */
-    public static ClassValue<Boolean> perClass(Predicate<Class<?>> question) {
-        return new ClassValue<Boolean>() {
-            @Override
-            protected Boolean computeValue(Class<?> type) {
-                return question.test(type);
+    /**
+     * Per class, cached for the class's lifetime: whether {@code name(params)} is declared strictly below
+     * {@code other(otherParams)} (a subclass overrides the one and not the other).
+     */
+    public static ClassValue<Boolean> declaredBelow(String name, Class<?>[] params, String other, Class<?>... otherParams) {
+        return new Question(false, null, name, params, other, otherParams);
+    }
+
+    /**
+     * Per class, cached: whether a declaration of {@code other(otherParams)} can be believed for a class
+     * that {@code framework} says takes the framework's path: true unless {@code name(params)} is declared
+     * strictly below it. {@code framework} null: every class takes it.
+     */
+    public static ClassValue<Boolean> trusted(ClassValue<Boolean> framework, String name, Class<?>[] params,
+                                              String other, Class<?>... otherParams) {
+        return new Question(true, framework, name, params, other, otherParams);
+    }
+
+    /**
+     * The one form of question (a class, not a lambda: a lambda's first call at start-up loads the
+     * method-handle machinery, about 90 classes, for every render).
+     */
+    private static final class Question extends ClassValue<Boolean> {
+        private final boolean trusting;
+        private final ClassValue<Boolean> framework;
+        private final String name, other;
+        private final Class<?>[] params, otherParams;
+
+        Question(boolean trusting, ClassValue<Boolean> framework, String name, Class<?>[] params, String other,
+                 Class<?>[] otherParams) {
+            this.trusting = trusting;
+            this.framework = framework;
+            this.name = name;
+            this.params = params;
+            this.other = other;
+            this.otherParams = otherParams;
+        }
+
+        @Override
+        protected Boolean computeValue(Class<?> c) {
+            boolean below = strictlyBelow(declarer(c, name, params), declarer(c, other, otherParams));
+            if (!trusting) {
+                return below;
             }
-        };
+            return framework != null && !framework.get(c) || !below;
+        }
     }
 }

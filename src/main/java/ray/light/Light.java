@@ -25,15 +25,13 @@ public abstract class Light implements SceneObject {
      * {@code MyLight extends PointLight} overriding only {@code getIntensity}): the renderer then samples
      * through {@code getIntensity}, and the plan believes only declarations made at or below it.
      */
-    private static final ClassValue<Boolean> FRAMEWORK_INTENSITY = Overrides.perClass(c -> Overrides.strictlyBelow(
-            Overrides.declarer(c, "getIntensity", FRAMEWORK),
-            Overrides.declarer(c, "sample", IntersectionRecord.class, Scene.class, int.class, LightSample.class)));
+    private static final ClassValue<Boolean> FRAMEWORK_INTENSITY = Overrides.declaredBelow("getIntensity", FRAMEWORK,
+            "sample", IntersectionRecord.class, Scene.class, int.class, LightSample.class);
     private static final ClassValue<Boolean> TRUSTED_DARK = trusted("isDark");
     private static final ClassValue<Boolean> TRUSTED_RAYS = trusted("shadowRaysPerPoint");
 
     private static ClassValue<Boolean> trusted(String declaration) {
-        return Overrides.perClass(c -> !FRAMEWORK_INTENSITY.get(c) || !Overrides.strictlyBelow(
-                Overrides.declarer(c, "getIntensity", FRAMEWORK), Overrides.declarer(c, declaration)));
+        return Overrides.trusted(FRAMEWORK_INTENSITY, "getIntensity", FRAMEWORK, declaration);
     }
 
     private final boolean frameworkIntensity = FRAMEWORK_INTENSITY.get(getClass());

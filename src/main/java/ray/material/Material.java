@@ -33,13 +33,10 @@ public abstract class Material implements SceneObject {
      * {@code MyDiffuse extends Diffuse} overriding only {@code shade(ray, record, scene)}): the renderer
      * then calls the framework form, and the plan believes only declarations made at or below it.
      */
-    private static final ClassValue<Boolean> FRAMEWORK_SHADE = Overrides.perClass(c -> Overrides.strictlyBelow(
-            Overrides.declarer(c, "shade", FRAMEWORK), Overrides.declarer(c, "shade", FAST)));
-    private static final ClassValue<Boolean> TRUSTED_TERMS = Overrides.perClass(c -> !FRAMEWORK_SHADE.get(c)
-            || !Overrides.strictlyBelow(Overrides.declarer(c, "shade", FRAMEWORK), Overrides.declarer(c, "terms")));
-    private static final ClassValue<Boolean> TRUSTED_COST = Overrides.perClass(c -> !FRAMEWORK_SHADE.get(c)
-            || !Overrides.strictlyBelow(Overrides.declarer(c, "shade", FRAMEWORK),
-                    Overrides.declarer(c, "hitCost", ShadingPlan.class)));
+    private static final ClassValue<Boolean> FRAMEWORK_SHADE = Overrides.declaredBelow("shade", FRAMEWORK, "shade", FAST);
+    private static final ClassValue<Boolean> TRUSTED_TERMS = Overrides.trusted(FRAMEWORK_SHADE, "shade", FRAMEWORK, "terms");
+    private static final ClassValue<Boolean> TRUSTED_COST = Overrides.trusted(FRAMEWORK_SHADE, "shade", FRAMEWORK,
+            "hitCost", ShadingPlan.class);
 
     private final boolean frameworkShade = FRAMEWORK_SHADE.get(getClass());
 
