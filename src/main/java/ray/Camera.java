@@ -120,13 +120,12 @@ public class Camera implements SceneObject {
     }
 
     /** True for a class that makes its camera rays its own way (overrides a ray method): nothing is projected for it. */
-    private static final ClassValue<Boolean> OWN_RAYS = Overrides.perClass(c -> c != Camera.class
-            && (Overrides.declarer(c, "setRay", Ray.class, double.class, double.class) != Camera.class
-            || Overrides.declarer(c, "setRayThrough", Ray.class, double.class, double.class, double.class, double.class) != Camera.class
-            || Overrides.declarer(c, "getRayThrough", double.class, double.class, double.class, double.class) != Camera.class
-            || Overrides.declarer(c, "planeX", double.class, double.class) != Camera.class
-            || Overrides.declarer(c, "planeY", double.class, double.class) != Camera.class
-            || Overrides.declarer(c, "recalculate") != Camera.class));
+    private static final ClassValue<Boolean> OWN_RAYS = Overrides.overridesAny(Camera.class,
+            new String[] {"setRay", "setRayThrough", "getRayThrough", "planeX", "planeY", "recalculate"},
+            new Class<?>[][] {{Ray.class, double.class, double.class},
+                              {Ray.class, double.class, double.class, double.class, double.class},
+                              {double.class, double.class, double.class, double.class},
+                              {double.class, double.class}, {double.class, double.class}, {}});
 
     /**
      * The pixels of a {@code width} x {@code height} image whose camera rays (any sample within the pixel)

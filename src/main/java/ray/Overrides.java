@@ -49,6 +49,24 @@ public final class Overrides {
     }
 
     /**
+     * Per class, cached: whether the class overrides, below {@code base}, any of the methods
+     * {@code names[i](params[i])} ({@code base} itself: false).
+     */
+    public static ClassValue<Boolean> overridesAny(Class<?> base, String[] names, Class<?>[][] params) {
+        return new ClassValue<Boolean>() {
+            @Override
+            protected Boolean computeValue(Class<?> c) {
+                for (int i = 0; c != base && i < names.length; i++) {
+                    if (declarer(c, names[i], params[i]) != base) {
+                        return true;
+                    }
+                }
+                return false;
+            }
+        };
+    }
+
+    /**
      * The one form of question (a class, not a lambda: a lambda's first call at start-up loads the
      * method-handle machinery, about 90 classes, for every render).
      */

@@ -62,6 +62,19 @@ public final class RayCountBound {
         int children() {
             return mirror + refraction;
         }
+
+        // written out: a record's generated equals/hashCode bootstrap through invokedynamic, which loads
+        // the method-handle machinery on every render's start (StartupClassesTest)
+        @Override
+        public boolean equals(Object o) {
+            return o instanceof Node n && Double.compare(n.shadow, shadow) == 0 && n.mirror == mirror
+                    && n.refraction == refraction && Double.compare(n.weight, weight) == 0;
+        }
+
+        @Override
+        public int hashCode() {
+            return ((Double.hashCode(shadow) * 31 + mirror) * 31 + refraction) * 31 + Double.hashCode(weight);
+        }
     }
 
     static RayCountBound of(RenderPlan plan) {
@@ -190,6 +203,15 @@ public final class RayCountBound {
         }
 
         private record State(int depth, double weight) {
+            @Override
+            public boolean equals(Object o) {   // (written out: see Node)
+                return o instanceof State s && s.depth == depth && Double.compare(s.weight, weight) == 0;
+            }
+
+            @Override
+            public int hashCode() {
+                return depth * 31 + Double.hashCode(weight);
+            }
         }
 
         /** Without weights: one array per depth, filled from MaxDepth up (no recursion). */
@@ -268,10 +290,13 @@ public final class RayCountBound {
                     if (r == null) {
                         r = rect(scene, s, w, h);
                     }
-                    rects.computeIfAbsent(node, k -> {
-                        order.add(k);
-                        return new ArrayList<>();
-                    }).add(r);
+                    List<int[]> list = rects.get(node);
+                    if (list == null) {   // (no computeIfAbsent lambda: see Node)
+                        order.add(node);
+                        list = new ArrayList<>();
+                        rects.put(node, list);
+                    }
+                    list.add(r);
                 }
             }
             double[][] cost = new double[order.size()][];
@@ -316,8 +341,13 @@ public final class RayCountBound {
             List<int[]> active = new ArrayList<>();
             for (int y = 0; y < h; y++) {
                 active.addAll(starting.get(y));
-                final int yy = y;
-                active.removeIf(r -> r[3] <= yy);
+                int kept = 0;
+                for (int[] r : active) {   // drop the rectangles ended above this row (no removeIf lambda: see Node)
+                    if (r[3] > y) {
+                        active.set(kept++, r);
+                    }
+                }
+                active.subList(kept, active.size()).clear();
                 if (active.isEmpty()) {
                     continue;
                 }
