@@ -395,7 +395,9 @@ public final class Main implements Callable<Integer> {
      */
     String undecodableName() {
         List<String> names = new ArrayList<>();
-        scenes.forEach(p -> names.add(p.toString()));
+        for (Path p : scenes) {   // (a loop, not forEach(lambda): no lambda on a render's path, StartupClassesTest)
+            names.add(p.toString());
+        }
         if (outputArg != null) {
             names.add(outputArg);
         }
