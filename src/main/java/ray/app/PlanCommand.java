@@ -8,8 +8,10 @@ import ray.Failures;
 import ray.Scene;
 import ray.parse.Parser;
 import ray.parse.SceneFormatException;
+import ray.render.Pilot;
 import ray.plan.CostGate;
 import ray.plan.PlanReport;
+import ray.plan.RayEstimate;
 import ray.plan.RenderPlan;
 import ray.settings.RenderSettings;
 
@@ -48,15 +50,27 @@ final class PlanCommand {
                     err.println(w);
                 }
                 PlanReport report = PlanReport.of(name, scene, settings);
+                int threads = Runtime.getRuntime().availableProcessors();
+                RayEstimate estimate;
+                String noEstimate = null;
+                try {
+                    estimate = Pilot.estimate(scene, settings, threads);
+                    if (estimate == null) {
+                        noEstimate = Double.isFinite(report.plan().bound().total()) ? "no estimate: even a pilot of one pixel may cast too many rays"
+                                : "no estimate: a user class may trace any number of rays";
+                    }
+                } catch (RuntimeException e) {   // a user's class failing in the pilot render
+                    estimate = null;
+                    noEstimate = "no estimate: the pilot render failed: " + Failures.describe(e);
+                }
                 if (json) {
-                    out.println(report.json());
+                    out.println(report.json(estimate, threads));
                 } else {
                     report.text().forEach(out::println);
                     RenderPlan plan = report.plan();
-                    String verdict = CostGate.refusal(name, plan) != null
-                            ? "a render would be refused (" + CostGate.ALLOW + " allows it)" : "a render would go ahead";
-                    out.println("  " + verdict + "; estimate from the bound: "
-                            + CostGate.estimate(plan.bound().total(), Runtime.getRuntime().availableProcessors()));
+                    out.println("  " + (estimate != null ? estimate.line(threads) : noEstimate));
+                    out.println("  " + (CostGate.refusal(name, plan) != null ? "a render would be refused (bound over 1e11 rays; "
+                            + CostGate.ALLOW + " allows it)" : "a render would go ahead"));
                 }
             } catch (SceneFormatException e) {
                 err.println(Failures.oneLine(e.getMessage()));

@@ -171,7 +171,15 @@ final class SceneJob {
             if (plan != null && main.relaunchedForLongRender(plan, name, Outputs.isStdin(scenePath))) {
                 return true;   // (the launcher started again reports the plan's notes and the render)
             }
-            if (plan != null && !CostGate.check(name, plan, main.allowLong, main.threads, main.quiet, err)) {
+            // the estimate's pilot render runs only where the bound leaves room for a long render
+            java.util.function.Supplier<ray.plan.RayEstimate> pilot = () -> {
+                try {
+                    return ray.render.Pilot.estimate(scene, settings, main.threads);
+                } catch (RuntimeException e) {
+                    return null;   // a user's class failing in the pilot fails the render itself, with its own line
+                }
+            };
+            if (plan != null && !CostGate.check(name, plan, main.allowLong, main.threads, main.quiet, err, pilot)) {
                 return false;
             }
         } catch (Throwable e) {

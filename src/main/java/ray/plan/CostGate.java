@@ -1,12 +1,16 @@
 package ray.plan;
 
+import java.util.function.Supplier;
 import ray.Scene;
 
 /**
  * Knows a render's cost before the first ray: refuses a scene whose bound on rays is absurd (over
- * {@link #MAX_RAYS}, about three hours on two cores at the speeds measured in docs/performance.md)
- * unless the user allows it ({@code --allow-long}), and says up front when a render may take long.
- * A bound that is unknown (a user class may trace any number of rays) is never refused.
+ * {@link #MAX_RAYS}, hours on two cores at the rate of {@link RayEstimate#RAYS_PER_THREAD_SECOND})
+ * unless the user allows it ({@code --allow-long}), and says up front when a render will likely take
+ * long. The refusal reads the bound (a bound: the render cannot cast more); the notice reads an
+ * estimate (a pilot render, {@link RayEstimate}), asked for only where the bound leaves room for a long
+ * render, and says that it is an estimate. A bound that is unknown (a user class may trace any number
+ * of rays) is never refused.
  */
 public final class CostGate {
 
@@ -14,28 +18,35 @@ public final class CostGate {
     public static final double MAX_RAYS = 1e11;
     /** Renders whose estimate is above this many seconds are announced. */
     public static final double LONG_SECONDS = 60;
-    /** Rays per second one render thread casts and shades, for the estimate (the mirrors bench scene, C1 JIT). */
-    static final double RAYS_PER_THREAD_SECOND = 5e6;
     /** The option that allows a refused render. */
     public static final String ALLOW = "--allow-long";
 
     private CostGate() {
     }
 
+    /** {@link #check(String, RenderPlan, boolean, int, boolean, java.io.PrintStream, Supplier)} without a pilot: the notice reads the bound. */
+    public static boolean check(String sceneName, RenderPlan plan, boolean allowed, int threads, boolean quiet, java.io.PrintStream err) {
+        return check(sceneName, plan, allowed, threads, quiet, err, null);
+    }
+
     /**
      * Before rendering with {@code plan} (the render's own: hand it to the renderer): prints the refusal
      * and returns false when its bound is absurd and not {@code allowed}; otherwise prints the long-render
-     * notice (unless {@code quiet}) and returns true.
+     * notice (unless {@code quiet}) and returns true. {@code pilot} (may be null, may return null) gives
+     * the estimate; it is called only when the bound allows a render longer than {@link #LONG_SECONDS}.
      */
-    public static boolean check(String sceneName, RenderPlan plan, boolean allowed, int threads, boolean quiet, java.io.PrintStream err) {
+    public static boolean check(String sceneName, RenderPlan plan, boolean allowed, int threads, boolean quiet, java.io.PrintStream err,
+            Supplier<RayEstimate> pilot) {
         String refused = refusal(sceneName, plan);
         if (refused != null && !allowed) {
             err.println(refused);
             return false;
         }
-        String note = warning(sceneName, plan, threads);
-        if (note != null && !quiet) {
-            err.println(note);
+        if (!quiet) {
+            String note = warning(sceneName, plan, threads, pilot);
+            if (note != null) {
+                err.println(note);
+            }
         }
         return true;
     }
@@ -49,30 +60,38 @@ public final class CostGate {
         }
         Scene s = plan.scene();
         return sceneName + ": refused: this render may cast up to " + PlanReport.count(total) + " rays (limit 1e11; "
-                + estimate(total, Runtime.getRuntime().availableProcessors()) + "), mostly " + b.largest().key()
+                + atTheRate(total, Runtime.getRuntime().availableProcessors()) + "), mostly " + b.largest().key()
                 + " rays from " + b.factors(s) + "; " + ALLOW + " renders it anyway (raytracer --plan shows the plan)";
     }
 
-    /** A one-line notice when the render may take longer than {@link #LONG_SECONDS}, or null. */
-    public static String warning(String sceneName, RenderPlan plan, int threads) {
+    /**
+     * A one-line notice when the render will likely take longer than {@link #LONG_SECONDS}, or null: when
+     * the bound allows that long, the pilot's estimate decides (without a pilot, the bound does).
+     */
+    public static String warning(String sceneName, RenderPlan plan, int threads, Supplier<RayEstimate> pilot) {
         double total = plan.bound().total();
-        if (!Double.isFinite(total) || total / (RAYS_PER_THREAD_SECOND * Math.max(1, threads)) <= LONG_SECONDS) {
+        if (!Double.isFinite(total) || RayEstimate.seconds(total, threads) <= LONG_SECONDS) {
+            return null;   // even the bound's every ray would be quick
+        }
+        String bound = "the plan's bound: up to " + PlanReport.count(total) + " rays, " + plan.bound().largest().key() + " rays from "
+                + plan.bound().factors(plan.scene());
+        RayEstimate e = pilot == null ? null : pilot.get();
+        if (e == null) {
+            return sceneName + ": note: this render may take long: " + bound + " (" + atTheRate(total, threads) + ")";
+        }
+        if (e.seconds(threads) <= LONG_SECONDS) {
             return null;
         }
-        return sceneName + ": note: this render may cast up to " + PlanReport.count(total) + " rays ("
-                + plan.bound().largest().key() + " rays from " + plan.bound().factors(plan.scene()) + "): " + estimate(total, threads);
+        return sceneName + ": note: this render will likely take long: " + e.line(threads) + "; " + bound;
     }
 
-    /** "up to about 3 h on 2 threads" from a ray count. */
-    public static String estimate(double rays, int threads) {
+    /** "that many would take about 4 h on 2 threads at an estimated 4 M rays per thread-second" for a count of rays (an estimate of its time, said so). */
+    public static String atTheRate(double rays, int threads) {
         if (!Double.isFinite(rays)) {
-            return "unknown: a user class may trace any number of rays";
+            return "time unknown: a user class may trace any number of rays";
         }
-        double s = rays / (RAYS_PER_THREAD_SECOND * Math.max(1, threads));
-        double year = 365.25 * 86400;
-        String t = s < 1 ? "a second" : s < 90 ? Math.round(s) + " s" : s < 5400 ? Math.round(s / 60) + " min" : s < 3 * 86400 ? Math.round(s / 3600) + " h"
-                : s < 3 * year ? Math.round(s / 86400) + " days" : s < 1e6 * year ? Math.round(s / year) + " years" : null;
-        // never Math.round's Long.MAX_VALUE of days
-        return (t == null ? "more than a million years" : "up to about " + t) + " on " + threads + " thread" + (threads == 1 ? "" : "s");
+        String t = RayEstimate.duration(RayEstimate.seconds(rays, threads));
+        return "that many would take " + (t == null ? "more than a million years" : "about " + t) + " on " + threads + " thread"
+                + (threads == 1 ? "" : "s") + " at an estimated " + Math.round(RayEstimate.RAYS_PER_THREAD_SECOND / 1e6) + " M rays per thread-second";
     }
 }

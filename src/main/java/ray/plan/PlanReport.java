@@ -294,8 +294,13 @@ public final class PlanReport {
         return n < 1e12 ? String.format(java.util.Locale.ROOT, "%,d", (long) n) : String.format(java.util.Locale.ROOT, "%.1e", n);
     }
 
-    /** The plan for a program: one JSON object (keys in docs/json.md). */
+    /** The plan for a program: one JSON object (keys in docs/json.md), without an estimate. */
     public String json() {
+        return json(null, 0);
+    }
+
+    /** The plan for a program with the pilot's estimate on {@code threads} threads ({@code null}: none). */
+    public String json(RayEstimate estimate, int threads) {
         Scene s = plan.scene();
         JsonLine j = new JsonLine().put("scene", sceneName).put("width", s.width).put("height", s.height)
                 .put("samplesPerPixel", plan.settings().samples() * plan.settings().samples()).put("maxDepth", plan.settings().maxDepth());
@@ -308,6 +313,16 @@ public final class PlanReport {
         bound(j.open("boundWithoutPlan"), without.bound()).close();
         j.put("totalBound", plan.bound().total()).put("totalBoundWithoutPlan", without.bound().total());
         j.put("cutFaint", plan.cutsFaintPaths()).put("lights", lightLines).put("saved", saved).put("skipped", skipped);
+        if (estimate != null) {
+            j.open("estimate");
+            for (RayKind k : RayKind.values()) {
+                j.put(k.key(), Math.round(estimate.get(k)));
+            }
+            j.put("seconds", estimate.seconds(threads)).put("cpuSeconds", estimate.cpuSeconds()).put("threads", threads)
+                    .put("pilotFraction", estimate.fraction).close();
+        } else {
+            j.put("estimate", (String) null);
+        }
         return j.toString();
     }
 

@@ -206,7 +206,7 @@ class HostileResourceTest {
         Run r = render(small);
         assertEquals(1, r.status());
         assertTrue(r.err().startsWith(small + ": refused: this render may cast up to ") && r.err().contains("e+30")
-                && r.err().contains("(limit 1e11; more than a million years on ")
+                && r.err().contains("(limit 1e11; that many would take more than a million years on ")
                 && !r.err().contains("9223372036854775807"), r.err());
     }
 

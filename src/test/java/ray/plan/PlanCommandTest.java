@@ -109,7 +109,7 @@ class PlanCommandTest {
         assertTrue(out().contains("\"seconds\":{\"parse\":"), out());
         assertEquals(0, run("--plan", "--json", scene.toString()));
         assertEquals(List.of("scene", "width", "height", "samplesPerPixel", "maxDepth", "effects", "bound", "boundWithoutPlan",
-                "totalBound", "totalBoundWithoutPlan", "cutFaint", "lights", "saved", "skipped"), topLevelKeys(out().strip()));
+                "totalBound", "totalBoundWithoutPlan", "cutFaint", "lights", "saved", "skipped", "estimate"), topLevelKeys(out().strip()));
         String doc = Files.readString(Path.of("docs/json.md"));
         for (String key : List.of("cpuSeconds", "peakRssBytes", "bvhBytesPerPrimitive", "invalidSamples", "boundWithoutPlan",
                 "totalBoundWithoutPlan", "cutFaint", "cameraRays", "directLight", "mirrorReflection", "areaLightSamples", "userRays")) {
@@ -154,7 +154,7 @@ class PlanCommandTest {
         assertEquals("", out());
         // the plan says so too, without rendering
         assertEquals(0, run("--plan", scene.toString()));
-        assertTrue(out().contains("a render would be refused (--allow-long allows it)"), out());
+        assertTrue(out().contains("a render would be refused (bound over 1e11 rays; --allow-long allows it)"), out());
     }
 
     @Test
