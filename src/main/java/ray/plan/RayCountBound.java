@@ -267,8 +267,10 @@ public final class RayCountBound {
     private static final class Screen {
         /** Past this many rectangles of one material, its rectangles are merged into their bounding one. */
         private static final int MAX_RECTS = 256;
-        /** Past this much filling (pixels x rectangles), every material is one rectangle: bounded work. */
-        private static final long MAX_WORK = 4_000_000L;
+        /** Past this much filling (cells x rectangles), every material is one rectangle: bounded work. */
+        private static final long MAX_WORK = 1_000_000L;
+        /** About how many cells the image is cut into for the sum (cells of one pixel in images up to this size). */
+        private static final int CELLS = 65_536;
 
         private Screen() {
         }
@@ -277,27 +279,48 @@ public final class RayCountBound {
         static double[] perCameraRay(Scene scene, Map<Material, Node> nodeOf, Tree tree, int ns) {
             int w = Math.max(0, scene.width), h = Math.max(0, scene.height);
             List<Node> order = new ArrayList<>();
-            Map<Node, List<int[]>> rects = new java.util.LinkedHashMap<>();
+            // per kind of hit: the boxes of the surfaces it can be on (null: unbounded), and their union
+            Map<Node, List<double[]>> boxes = new HashMap<>();
+            Map<Node, double[]> unions = new HashMap<>();
+            Set<Material> ms = new LinkedHashSet<>();
             for (Surface s : scene.surfaces) {
-                Set<Material> ms = new LinkedHashSet<>();
+                ms.clear();
                 materials(s, ms);
-                int[] r = null;
+                double[] box = null;
+                boolean boxed = false;
                 for (Material m : ms) {
                     Node node = nodeOf.get(m);
                     if (node == null) {
                         continue;
                     }
-                    if (r == null) {
-                        r = rect(scene, s, w, h);
+                    if (!boxed) {
+                        box = box(s);
+                        boxed = true;
                     }
-                    List<int[]> list = rects.get(node);
-                    if (list == null) {   // (no computeIfAbsent lambda: see Node)
+                    List<double[]> l = boxes.get(node);
+                    if (l == null) {
                         order.add(node);
-                        list = new ArrayList<>();
-                        rects.put(node, list);
+                        boxes.put(node, l = new ArrayList<>());
+                        unions.put(node, new double[] {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
+                                Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY});
                     }
-                    list.add(r);
+                    l.add(box);
+                    include(unions, node, box);
                 }
+            }
+            // projected once per surface, or once for the union where a kind of hit is on many surfaces
+            Map<Node, List<int[]>> rects = new HashMap<>();
+            for (Node node : order) {
+                List<double[]> l = boxes.get(node);
+                List<int[]> out = new ArrayList<>();
+                if (l.size() > MAX_RECTS) {
+                    out.add(project(scene, unions.get(node), w, h));
+                } else {
+                    for (double[] b : l) {
+                        out.add(project(scene, b, w, h));
+                    }
+                }
+                rects.put(node, out);
             }
             double[][] cost = new double[order.size()][];
             for (int i = 0; i < order.size(); i++) {
@@ -306,15 +329,15 @@ public final class RayCountBound {
                     rects.get(order.get(i)).clear();   // a hit that casts nothing adds nothing anywhere
                 }
             }
+            // the image in cells of cell x cell pixels (about CELLS of them): a cell is charged its worst rectangle
+            // for each of its pixels (an upper bound, rectangles rounded out to whole cells), so the work does
+            // not grow with the image
+            int cell = (int) Math.max(1, Math.ceil(Math.sqrt((double) w * h / CELLS)));
+            int gw = (w + cell - 1) / cell, gh = (h + cell - 1) / cell;
             long work = 0;
             for (List<int[]> l : rects.values()) {
-                if (l.size() > MAX_RECTS) {
-                    int[] u = union(l);
-                    l.clear();
-                    l.add(u);
-                }
                 for (int[] r : l) {
-                    work += (long) (r[2] - r[0]) * (r[3] - r[1]);
+                    work += (long) ((r[2] + cell - 1) / cell - r[0] / cell) * ((r[3] + cell - 1) / cell - r[1] / cell);
                 }
             }
             if (work > MAX_WORK) {
@@ -324,22 +347,22 @@ public final class RayCountBound {
                     l.add(u);
                 }
             }
-            // row by row: each pixel's worst over the rectangles covering it, summed
+            // row of cells by row: each cell's worst over the rectangles covering it, times its pixels, summed
             List<List<int[]>> starting = new ArrayList<>();
-            for (int y = 0; y <= h; y++) {
+            for (int y = 0; y <= gh; y++) {
                 starting.add(new ArrayList<>());
             }
             for (int i = 0; i < order.size(); i++) {
                 for (int[] r : rects.get(order.get(i))) {
                     if (r[2] > r[0] && r[3] > r[1]) {
-                        starting.get(r[1]).add(new int[] {r[0], r[1], r[2], r[3], i});
+                        starting.get(r[1] / cell).add(new int[] {r[0] / cell, r[1] / cell, (r[2] + cell - 1) / cell, (r[3] + cell - 1) / cell, i});
                     }
                 }
             }
             double[] total = new double[SLOTS];
-            double[] row = new double[w * SLOTS];
+            double[] row = new double[gw * SLOTS];
             List<int[]> active = new ArrayList<>();
-            for (int y = 0; y < h; y++) {
+            for (int y = 0; y < gh; y++) {
                 active.addAll(starting.get(y));
                 int kept = 0;
                 for (int[] r : active) {   // drop the rectangles ended above this row (no removeIf lambda: see Node)
@@ -351,7 +374,7 @@ public final class RayCountBound {
                 if (active.isEmpty()) {
                     continue;
                 }
-                int from = w, to = 0;
+                int from = gw, to = 0;
                 for (int[] r : active) {
                     from = Math.min(from, r[0]);
                     to = Math.max(to, r[2]);
@@ -365,9 +388,11 @@ public final class RayCountBound {
                         }
                     }
                 }
+                int rows = Math.min(cell, h - y * cell);
                 for (int x = from; x < to; x++) {
+                    double pixels = (double) rows * Math.min(cell, w - x * cell);
                     for (int k = 0; k < SLOTS; k++) {
-                        total[k] += row[x * SLOTS + k];
+                        total[k] += row[x * SLOTS + k] * pixels;
                     }
                 }
             }
@@ -377,13 +402,30 @@ public final class RayCountBound {
             return total;
         }
 
-        /** The pixels whose camera rays can meet {@code s} (its box projected; the whole image when unbounded). */
-        private static int[] rect(Scene scene, Surface s, int w, int h) {
+        /** {@code s}'s box as {min x, y, z, max x, y, z}, or null where it has none to project (unbounded, or none given). */
+        private static double[] box(Surface s) {
             ray.accel.Aabb b = s.bounds();   // a user's surface may have none (null): the render names that, not the plan
-            if (scene.camera == null || b == null || !b.isFinite()) {
+            return b == null || !b.isFinite() ? null : new double[] {b.minX, b.minY, b.minZ, b.maxX, b.maxY, b.maxZ};
+        }
+
+        private static void include(Map<Node, double[]> unions, Node node, double[] box) {
+            double[] u = unions.get(node);
+            if (box == null || u == null) {
+                unions.put(node, null);   // unbounded: the whole image
+                return;
+            }
+            for (int i = 0; i < 3; i++) {
+                u[i] = Math.min(u[i], box[i]);
+                u[i + 3] = Math.max(u[i + 3], box[i + 3]);
+            }
+        }
+
+        /** The pixels whose camera rays can meet {@code box} (the whole image for null or without a camera). */
+        private static int[] project(Scene scene, double[] box, int w, int h) {
+            if (scene.camera == null || box == null) {
                 return new int[] {0, 0, w, h};
             }
-            return scene.camera.pixelsSeeing(b.minX, b.minY, b.minZ, b.maxX, b.maxY, b.maxZ, w, h);
+            return scene.camera.pixelsSeeing(box[0], box[1], box[2], box[3], box[4], box[5], w, h);
         }
 
         private static int[] union(List<int[]> l) {
