@@ -85,4 +85,19 @@ class PilotTest {
         assertTrue(note.startsWith("g: note: this render will likely take long: estimate (not a bound): about 6,001,000,000 rays, about 13 min on 2 threads"), note);
         assertTrue(note.contains("the plan's bound: up to "), note);
     }
+
+    /** A class that declares nothing may trace any number of rays: no pilot, no estimate (the plan says "no estimate"). */
+    @Test
+    void noEstimateForAUserMaterialThatDeclaresNothing() throws Exception {
+        Scene s = parse("material-diffuse.txt");
+        ray.material.Material mine = new ray.material.Material() {
+            @Override
+            public javax.vecmath.Vector3d shade(ray.Ray ray, ray.IntersectionRecord record, Scene scene) {
+                return new javax.vecmath.Vector3d(0.5, 0.5, 0.5);
+            }
+        };
+        s.surfaces.get(0).material = mine;
+        assertEquals(Double.POSITIVE_INFINITY, RenderPlan.derive(s, new RenderSettings()).bound().total());
+        assertNull(Pilot.estimate(s, new RenderSettings(), 2));
+    }
 }
