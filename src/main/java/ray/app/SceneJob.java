@@ -172,13 +172,7 @@ final class SceneJob {
                 return true;   // (the launcher started again reports the plan's notes and the render)
             }
             // the estimate's pilot render runs only where the bound leaves room for a long render
-            java.util.function.Supplier<ray.plan.RayEstimate> pilot = () -> {
-                try {
-                    return ray.render.Pilot.estimate(scene, settings, main.threads);
-                } catch (RuntimeException e) {
-                    return null;   // a user's class failing in the pilot fails the render itself, with its own line
-                }
-            };
+            PilotEstimate pilot = new PilotEstimate(scene, settings, main.threads);
             if (plan != null && !CostGate.check(name, plan, main.allowLong, main.threads, main.quiet, err, pilot)) {
                 return false;
             }
@@ -252,5 +246,30 @@ final class SceneJob {
             err.println(Main.oneLine(name) + ": warning: " + renderer.stats().invalidSamples + " samples were NaN or infinite and were left black");
         }
         return true;
+    }
+
+    /**
+     * The long-render note's estimate, asked for only when needed (a class, not a lambda: a lambda's
+     * first call loads the method-handle machinery on every render's start).
+     */
+    private static final class PilotEstimate implements java.util.function.Supplier<ray.plan.RayEstimate> {
+        private final Scene scene;
+        private final RenderSettings settings;
+        private final int threads;
+
+        PilotEstimate(Scene scene, RenderSettings settings, int threads) {
+            this.scene = scene;
+            this.settings = settings;
+            this.threads = threads;
+        }
+
+        @Override
+        public ray.plan.RayEstimate get() {
+            try {
+                return ray.render.Pilot.estimate(scene, settings, threads);
+            } catch (RuntimeException e) {
+                return null;   // a user's class failing in the pilot fails the render itself, with its own line
+            }
+        }
     }
 }
