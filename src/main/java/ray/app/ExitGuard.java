@@ -40,7 +40,7 @@ final class ExitGuard extends Thread {
         }
     }
 
-    /** What is being done to the scene, for the line: "rendered", "planned". */
+    /** What is being done to the scene, for the line: "rendered", "planned", "studied". */
     private static volatile String doing = "rendered";
 
     /** The scene now being read or rendered, or null between scenes. */
@@ -48,7 +48,7 @@ final class ExitGuard extends Thread {
         working(sceneName, line, "rendered");
     }
 
-    /** The scene now being read and {@code what} ("rendered", "planned"). */
+    /** The scene now being read and {@code what} ("rendered", "planned", "studied"). */
     static void working(String sceneName, ProgressLine line, String what) {
         progress = line;
         doing = what;

@@ -303,7 +303,14 @@ public final class Main implements Callable<Integer> {
                 return 2;
             }
             return outputChecked(ray.study.Study.run(scenes, quick, fullSize, reportDir != null ? reportDir : Path.of("build", "reports", "accuracy"),
-                    threads, in, out, err, !this.quiet && err == System.err && Terminal.stderr(), TerminalWidth::columns));
+                    threads, in, out, err, !this.quiet && err == System.err && Terminal.stderr(), TerminalWidth::columns,
+                    name -> {            // a user's class calling System.exit is named with the scene being studied
+                        if (name == null) {
+                            ExitGuard.idle();
+                        } else {
+                            ExitGuard.working(name, null, "studied");
+                        }
+                    }));
         }
         if (scenes.isEmpty() || view) {
             return openViewer();

@@ -29,6 +29,8 @@ public final class Study {
     private int maxPixels = StudySettings.MAX_PIXELS;
     /** The terminal's width in columns, asked at each redraw of the progress line (it may be resized). */
     private java.util.function.IntSupplier columns = () -> 80;
+    /** Told the scene being read or studied (its name as shown), and null after the last: the command line's exit guard. */
+    private java.util.function.Consumer<String> working = name -> { };
     /** Where the scene {@code -} is read from. */
     private java.io.InputStream in = System.in;
 
@@ -50,10 +52,12 @@ public final class Study {
      * is the terminal's width, which the progress line never exceeds.
      */
     public static int run(List<Path> scenes, boolean quick, boolean fullSize, Path outDir, int threads, java.io.InputStream in,
-                          PrintStream out, PrintStream err, boolean progress, java.util.function.IntSupplier columns) {
+                          PrintStream out, PrintStream err, boolean progress, java.util.function.IntSupplier columns,
+                          java.util.function.Consumer<String> working) {
         Study s = new Study(new RendererAdapter(threads), quick ? StudySettings.QUICK : StudySettings.FULL, 3, out, err, progress);
         s.in = in;
         s.columns = columns;
+        s.working = working;
         if (fullSize) {
             s.maxPixels(Integer.MAX_VALUE);
         }
@@ -111,6 +115,7 @@ public final class Study {
         for (Path p : scenePaths) {
             boolean stdin = p.toString().equals("-");
             String shown = Failures.oneLine(stdin ? "<stdin>" : p.toString());
+            working.accept(shown);
             try {
                 Scene scene = stdin ? Parser.parse(in, shown, new ArrayList<>()) : Parser.parse(p);
                 sizes.add(new int[] {scene.width, scene.height});
@@ -128,6 +133,7 @@ public final class Study {
                 failed++;
             }
         }
+        working.accept(null);
         names.addAll(ReportFolder.stems(parsed));
         List<String> files = new ArrayList<>(List.of("index.html", "adaptive-honesty.png"));
         for (String n : names) {
@@ -151,6 +157,7 @@ public final class Study {
             String shown = Failures.oneLine(parsed.get(i).toString().equals("-") ? "<stdin>" : parsed.get(i).toString());
             bar.label = name;
             SceneStudy.Outcome o;
+            working.accept(shown);
             try {
                 renderer.studying(parsed.get(i), scenes.get(i));
                 o = study.run(name, scenes.get(i), sizes.get(i)[0], sizes.get(i)[1], bar);
@@ -180,6 +187,7 @@ public final class Study {
                 failed++;
             }
         }
+        working.accept(null);
         bar.clear();
         boolean honesty = false;
         try {

@@ -214,9 +214,12 @@ class HostileProbeTest {
         probe("2.1", "System.out.println in a constructor and shade()", file("p.txt", material("Printer")),
                 "RENDER=0 STDOUT=0 STATS_JSON=0 PLAN=0 PLAN_JSON=0", "", "p.txt");
         probe("2.2", "System.exit(0) in shade()", file("q.txt", material("Quit")),
-                "RENDER=1 STDOUT=1 STATS_JSON=1 PLAN=0 PLAN_JSON=0 STUDY=1 VIEW=1", "Quit\\.shade called System\\.exit", "q.txt");
+                "RENDER=1 STDOUT=1 STATS_JSON=1 PLAN=0 PLAN_JSON=0 STUDY=1 VIEW=1",
+                "^q\\.txt: Quit\\.shade called System\\.exit while the scene was being (rendered|studied)|^raytracer: Quit\\.shade called System\\.exit "
+                + "while the viewer was open", "q.txt");
         probe("2.2", "System.exit(0) in terms()", file("q.txt", material("QuitTerms")),
-                "RENDER=1 PLAN=1 PLAN_JSON=1 STUDY=1", "QuitTerms\\.terms called System\\.exit", "q.txt");
+                "RENDER=1 PLAN=1 PLAN_JSON=1 STUDY=1",
+                "^q\\.txt: QuitTerms\\.terms called System\\.exit while the scene was being (rendered|planned|studied)", "q.txt");
         probe("2.2", "a user thread calls System.exit between two scenes", both(file("later.txt", material("Later")),
                 file("slow.txt", material("Slow"))), "RENDER=1 VIEW=1", "Later\\.lambda.*called System\\.exit", "-j", "1", "later.txt", "slow.txt");
         probe("2.3", "an Error in terms()", file("t.txt", material("ErrTerms")), ALL_FAIL, "ErrTerms\\.terms", "t.txt");
