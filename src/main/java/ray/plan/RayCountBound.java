@@ -450,6 +450,12 @@ public final class RayCountBound {
          * otherwise be walked once per path, 2^60 times for 60 levels).
          */
         private static void materials(Surface s, Set<Material> out) {
+            if (s.operands().isEmpty()) {    // a plain surface, nearly every one: no walk, nothing made (this runs per surface per render)
+                if (s.material != null) {
+                    out.add(s.material);
+                }
+                return;
+            }
             ArrayDeque<Surface> todo = new ArrayDeque<>();
             Set<Surface> seen = Collections.newSetFromMap(new IdentityHashMap<>());
             todo.push(s);
