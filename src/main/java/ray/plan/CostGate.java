@@ -54,6 +54,9 @@ public final class CostGate {
     /** The one-line refusal for {@code plan}'s scene, or null when its bound is below {@link #MAX_RAYS} or unknown. */
     public static String refusal(String sceneName, RenderPlan plan) {
         RayCountBound b = plan.bound();
+        if (!(b.atMost() > MAX_RAYS)) {
+            return null;   // even the cheap bound is below the limit: no pass over the surfaces for this render
+        }
         double total = b.total();
         if (!(total > MAX_RAYS) || !Double.isFinite(total)) {
             return null;
@@ -69,6 +72,10 @@ public final class CostGate {
      * the bound allows that long, the pilot's estimate decides (without a pilot, the bound does).
      */
     public static String warning(String sceneName, RenderPlan plan, int threads, Supplier<RayEstimate> pilot) {
+        double atMost = plan.bound().atMost();
+        if (!Double.isFinite(atMost) || RayEstimate.seconds(atMost, threads) <= LONG_SECONDS) {
+            return null;   // the cheap bound already says quick (or unknown): no pass over the surfaces
+        }
         double total = plan.bound().total();
         if (!Double.isFinite(total) || RayEstimate.seconds(total, threads) <= LONG_SECONDS) {
             return null;   // even the bound's every ray would be quick

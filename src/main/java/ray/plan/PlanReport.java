@@ -75,9 +75,10 @@ public final class PlanReport {
                 : "per lit point: " + String.join(", ", sampled), null));
         if (plan.cutsFaintPaths()) {
             RayCountBound b = plan.bound();
+            int reachable = b.reachableDepth();   // (narrows the bound first: the depth the narrowing reaches)
             effects.add(new Effect("faint paths cut", true, "inexact, --cut-faint: no mirror ray where the product of k_m along the path"
-                    + " is below 1/510 (half an 8-bit step for radiance up to 1)" + (b.uncutDepth > b.depth
-                    ? "; at most " + b.depth + " of MaxDepth " + b.uncutDepth + " bounces reachable" : "; no bounce provably cut"), null));
+                    + " is below 1/510 (half an 8-bit step for radiance up to 1)" + (b.uncutDepth > reachable
+                    ? "; at most " + reachable + " of MaxDepth " + b.uncutDepth + " bounces reachable" : "; no bounce provably cut"), null));
         }
         boolean user = !unknown.isEmpty() || lit && !plan.unknownLights.isEmpty();
         List<String> who = new ArrayList<>();

@@ -48,6 +48,17 @@ public final class RayCountBound {
 
     private final double[] rays = new double[RayKind.values().length];
     private double total;
+    /**
+     * An upper bound on {@link #total()} without the per-pixel narrowing (camera rays x the worst kind of hit):
+     * what a render's cost gate reads first, so that the narrowing (a pass over every surface) runs only for
+     * renders near the gate's limits and for the plan's report.
+     */
+    private double atMost;
+    /** Until {@link #narrow()}: what the per-pixel narrowing needs (null after it, or when nothing is narrowed). */
+    private Scene scene;
+    private Map<Material, Node> nodeOf;
+    private Tree tree;
+    private boolean cut;
     /** What the bound was computed from: camera rays, most secondary rays per hit, shadow rays per lit point, MaxDepth. */
     double cameraRays, perPoint;
     int branch, depth, ns;
@@ -113,31 +124,72 @@ public final class RayCountBound {
             b.rays[SHADOW] = direct && perPoint > 0 ? Double.POSITIVE_INFINITY : 0;
             b.rays[MIRROR] = mirrors ? Double.POSITIVE_INFINITY : 0;
             b.rays[REFRACTION] = refracts ? Double.POSITIVE_INFINITY : 0;
-            b.total = Double.POSITIVE_INFINITY;
+            b.total = b.atMost = Double.POSITIVE_INFINITY;
             return b;
         }
-        Tree tree = new Tree(new ArrayList<>(nodes), depth, plan.cutsFaintPaths());
-        // per camera ray: the worst subtree of a material its pixel can see (a surface's box projected
-        // into the image), summed over the pixels; n x that of the worst material where nothing is narrowed
+        // the cheap upper bound first: every camera ray charged the worst kind of hit (its own tree, so the
+        // narrowing's tree reports the depths only the narrowing reaches)
+        Tree worst = new Tree(new ArrayList<>(nodes), depth, plan.cutsFaintPaths());
+        double[] c = new double[SLOTS];
+        for (Node node : nodes) {
+            Tree.max(c, worst.cost(node, 0, 1));
+        }
+        for (int k = 0; k < SLOTS; k++) {
+            c[k] = n == 0 ? 0 : c[k] * n;
+        }
+        b.atMost = b.fill(c, new double[b.rays.length]);
+        b.scene = scene;
+        b.nodeOf = nodeOf;
+        b.tree = new Tree(new ArrayList<>(nodes), depth, plan.cutsFaintPaths());
+        b.cut = plan.cutsFaintPaths();
+        return b;
+    }
+
+    /**
+     * The bound narrowed by what each pixel can see: per camera ray, the worst subtree of a material its
+     * pixel can see (a surface's box projected into the image), summed over the pixels. Done once, on the
+     * first question that needs it.
+     */
+    private synchronized void narrow() {
+        if (tree == null) {
+            return;
+        }
         double[] c = Screen.perCameraRay(scene, nodeOf, tree, ns);
-        // a known bound that overflows a double (glass at MaxDepth 1000: 2^1000 paths) stays finite, the
-        // largest double, so that it is refused as astronomical and never read as "unknown" (infinite)
-        if (n == 0) {
+        if (cameraRays == 0) {
             c = new double[SLOTS];   // no pixel, no ray (and no 0 x infinity)
         }
-        b.rays[SHADOW] = Double.isFinite(perPoint) ? finite(c[S]) : c[S] > 0 ? Double.POSITIVE_INFINITY : 0;
-        b.rays[MIRROR] = finite(c[M]);
-        b.rays[REFRACTION] = finite(c[R]);
+        total = fill(c, rays);
+        if (cut) {
+            uncutDepth = depth;
+            depth = tree.deepest;
+        }
+        scene = null;
+        nodeOf = null;
+        tree = null;
+    }
+
+    /** Sets the secondary kinds of {@code out} from the subtree totals {@code c}; returns the total. */
+    private double fill(double[] c, double[] out) {
+        // a known bound that overflows a double (glass at MaxDepth 1000: 2^1000 paths) stays finite, the
+        // largest double, so that it is refused as astronomical and never read as "unknown" (infinite)
+        out[CAMERA] = rays[CAMERA];
+        out[USER] = rays[USER];
+        out[SHADOW] = Double.isFinite(perPoint) ? finite(c[S]) : c[S] > 0 ? Double.POSITIVE_INFINITY : 0;
+        out[MIRROR] = finite(c[M]);
+        out[REFRACTION] = finite(c[R]);
         double sum = 0;
-        for (double r : b.rays) {
+        for (double r : out) {
             sum += r;
         }
-        b.total = Double.isFinite(perPoint) ? finite(Math.min(sum, n + c[ALL])) : b.rays[USER] + sum;
-        if (plan.cutsFaintPaths()) {
-            b.uncutDepth = depth;
-            b.depth = tree.deepest;
-        }
-        return b;
+        return Double.isFinite(perPoint) ? finite(Math.min(sum, cameraRays + c[ALL])) : out[USER] + sum;
+    }
+
+    /**
+     * An upper bound on {@link #total()} that needs no pass over the surfaces (camera rays x the worst kind
+     * of hit): a caller that only compares the bound with a limit reads this first.
+     */
+    public double atMost() {
+        return atMost;
     }
 
     /**
@@ -477,6 +529,7 @@ public final class RayCountBound {
 
     /** With faint paths cut, the bounces that can still be reached; MaxDepth otherwise. */
     public int reachableDepth() {
+        narrow();
         return depth;
     }
 
@@ -493,6 +546,7 @@ public final class RayCountBound {
 
     /** What makes the bound large, in words: the factors it multiplies. */
     public String factors(Scene scene) {
+        narrow();
         String s = scene.width + "x" + scene.height + " pixels x " + ns + "x" + ns + " samples";
         if (branch > 0 && depth > 0) {
             s += ", " + (branch == 1 ? "a chain of " + depth + " bounces (MaxDepth)"
@@ -507,6 +561,9 @@ public final class RayCountBound {
 
     /** The bound for rays of kind {@code k}, infinite where unknown. */
     public double get(RayKind k) {
+        if (k != RayKind.CAMERA) {   // camera rays are not narrowed: the JIT policy reads them on every render
+            narrow();
+        }
         return rays[k.ordinal()];
     }
 
@@ -515,11 +572,13 @@ public final class RayCountBound {
      * of the kinds' bounds.
      */
     public double total() {
+        narrow();
         return total;
     }
 
     /** The sum of the kinds' own bounds (at least {@link #total()}). */
     public double sumOfKinds() {
+        narrow();
         double t = 0;
         for (double r : rays) {
             t += r;
