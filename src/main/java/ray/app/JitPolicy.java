@@ -21,7 +21,9 @@ import ray.plan.RenderPlan;
  * command line is long, this process runs the launcher again on the same command line with
  * {@code RAYTRACER_JIT=long} (full tiered compilation), passes its standard streams through and ends
  * with that process's exit status. Nothing has been printed or written by then; the cost is one more
- * JVM start and a second parse of the first scene (a few percent of a long render).
+ * JVM start and a second parse of the first scene (a few percent of a long render). A scene with large
+ * OBJ meshes is judged before they are read ({@link #isLongBeforeFiles}, told by the parser through
+ * {@link BeforeMeshes}), so that a long mesh render does not read its files twice.
  */
 final class JitPolicy {
 
@@ -38,6 +40,18 @@ final class JitPolicy {
     private JitPolicy() {
     }
 
+    /**
+     * OBJ bytes from which a scene is judged before its meshes are read ({@link #isLongBeforeFiles}):
+     * about 270,000 triangles with normals (mesh1m's file is 58 MB for 998,000).
+     */
+    static final long MESH_BYTES = 16L << 20;
+    /**
+     * Expected rays from which a scene with {@link #MESH_BYTES} of OBJ files is long. A ray costs a large
+     * mesh several times what it costs the classic scene (a deeper tree), so C2 pays from fewer rays:
+     * mesh1m (35 M such rays, 998,000 triangles) takes 0.8x the CPU under C2 (docs/performance.md).
+     */
+    static final double MESH_RAYS = 2e7;
+
     /** The launcher to start again for a long render, or null when this process may not. */
     static String launcher() {
         String l = System.getenv(RELAUNCH);
@@ -50,12 +64,73 @@ final class JitPolicy {
      * how many shadow rays it casts counts as one.
      */
     static double expectedRays(RenderPlan plan) {
+        return plan.bound().get(RayKind.CAMERA) * (1 + shadowRaysPerPoint(List.of(plan.lights())));
+    }
+
+    /** Shadow rays per lit point of {@code lights}: their planned samples, one for a light that cannot say. */
+    private static double shadowRaysPerPoint(List<Light> lights) {
         double perPoint = 0;
-        for (Light l : plan.lights()) {
-            int n = l.plannedShadowRays();
+        for (int i = 0; i < lights.size(); i++) {       // indexed: no iterator
+            int n = lights.get(i).plannedShadowRays();
             perPoint += n < 0 ? 1 : n;
         }
-        return plan.bound().get(RayKind.CAMERA) * (1 + perPoint);
+        return perPoint;
+    }
+
+    /**
+     * Whether a scene is long before its meshes are read: {@code objBytes} of OBJ files (those the parser
+     * is about to read and those before them) from {@link #MESH_BYTES}, and from {@link #MESH_RAYS} camera
+     * rays and shadow rays of their first hits by the lights read so far (a scene that names its image size,
+     * samples or lights after its meshes is judged by what was read: it may be found long again after the
+     * parse, by {@link #isLong}, at the cost of a second read of its files).
+     */
+    static boolean isLongBeforeFiles(ray.Scene sceneSoFar, ray.settings.RenderSettings settings, long objBytes) {
+        if (objBytes < MESH_BYTES) {
+            return false;
+        }
+        int ns = settings.samples();
+        double camera = (double) Math.max(0, sceneSoFar.width) * Math.max(0, sceneSoFar.height) * ns * ns;
+        return camera * (1 + shadowRaysPerPoint(sceneSoFar.lights)) >= MESH_RAYS;
+    }
+
+    /**
+     * The parser's listener for the first scene ({@link Main#beforeFiles}): before each Mesh's OBJ file is
+     * read it adds the file's size and, once the scene read so far is long ({@link #isLongBeforeFiles}),
+     * starts the launcher again under C2 and ends this process's parse by throwing {@link Relaunched}
+     * (nothing read twice but the scene's text before the mesh). A class, not a lambda (StartupClassesTest).
+     */
+    static final class BeforeMeshes implements ray.parse.BeforeFile {
+        private final Main main;
+        private long bytes;
+
+        BeforeMeshes(Main main) {
+            this.main = main;
+        }
+
+        @Override
+        public void beforeFile(ray.Scene sceneSoFar, long size) {
+            if (size > 0) {
+                bytes += size;
+            }
+            boolean isLong;
+            try {
+                isLong = isLongBeforeFiles(sceneSoFar, main.renderSettings().resolve(sceneSoFar), bytes);
+            } catch (RuntimeException e) {
+                return;   // a setting the scene does not allow yet: the parse reports it, the plan decides later
+            }
+            if (isLong && main.relaunchNow()) {
+                throw new Relaunched();
+            }
+        }
+    }
+
+    /** Thrown through the parser once the launcher started again has run the command line (stackless). */
+    static final class Relaunched extends Error {
+        private static final long serialVersionUID = 1L;
+
+        Relaunched() {
+            super(null, null, false, false);
+        }
     }
 
     /**

@@ -498,6 +498,26 @@ public final class Main implements Callable<Integer> {
         if (!mayRelaunch || fromStdin || !JitPolicy.isLong(plan, name, allowLong)) {
             return false;
         }
+        return relaunchNow();
+    }
+
+    /**
+     * What the parser of the first scene tells before it reads a Mesh's OBJ file, or null when this
+     * process may not start the launcher again: {@link JitPolicy.BeforeMeshes} decides a long mesh render
+     * there, before its large files are read ({@link JitPolicy#isLongBeforeFiles}).
+     */
+    ray.parse.BeforeFile beforeFiles() {
+        return mayRelaunch ? new JitPolicy.BeforeMeshes(this) : null;
+    }
+
+    /**
+     * Runs the whole command line again under C2, once, and returns true (its status is then this
+     * command's), or false when this process may not or the launcher could not be started.
+     */
+    boolean relaunchNow() {
+        if (!mayRelaunch) {
+            return false;
+        }
         mayRelaunch = false;
         relaunched = JitPolicy.relaunch(JitPolicy.launcher(), args);
         return relaunched >= 0;

@@ -136,7 +136,9 @@ final class SceneJob {
         ExitGuard.working(name, null);
         try {
             scene = Outputs.isStdin(scenePath)
-                    ? Parser.parse(main.in(), name, warnings) : Parser.parse(scenePath, warnings);
+                    ? Parser.parse(main.in(), name, warnings) : Parser.parse(scenePath, warnings, main.beforeFiles());
+        } catch (JitPolicy.Relaunched e) {
+            return true;   // the launcher, started again under C2 before the meshes were read, ran the command line
         } catch (SceneFormatException e) {
             return fail(e.getMessage());
         } catch (OutOfMemoryError e) {

@@ -72,6 +72,14 @@ public final class Parser {
 
     /** As {@link #parse(Path)}, adding warnings (e.g. zero-area triangles) as {@code file:line: warning: ...}. */
     public static Scene parse(Path path, List<String> warnings) throws SceneFormatException {
+        return parse(path, warnings, null);
+    }
+
+    /**
+     * As {@link #parse(Path, List)}, telling {@code beforeFile} (when not null) before each file an object
+     * names is read; an Error of its own class that it throws ends the parse and leaves this method unchanged.
+     */
+    public static Scene parse(Path path, List<String> warnings, BeforeFile beforeFile) throws SceneFormatException {
         String name = path.toString();
         if (name.isEmpty()) {
             throw new SceneFormatException("''", 0, "cannot read the scene: an empty file name (expected a scene file)");
@@ -86,6 +94,7 @@ public final class Parser {
         }
         Parser p = new Parser(name, Parser.class.getClassLoader());
         p.source = path;
+        p.objects.beforeFile = beforeFile;
         try (InputStream in = Files.newInputStream(path)) {
             return p.run(Lines.of(in, name), warnings);
         } catch (NoSuchFileException e) {

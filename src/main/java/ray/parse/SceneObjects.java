@@ -51,6 +51,8 @@ final class SceneObjects {
     private final Set<Surface> acyclic = Collections.newSetFromMap(new IdentityHashMap<>());
     /** Plausibility warnings ({@link Plausibility}), in the order of their objects. */
     final List<String> plausibility = new ArrayList<>();
+    /** Told before a Mesh's OBJ file is read (null: nobody asked); what it throws is let through. */
+    BeforeFile beforeFile;
 
     SceneObjects(String file, Scene scene) {
         this.file = file;
@@ -152,6 +154,9 @@ final class SceneObjects {
             if (o instanceof ReadsFiles r) {
                 readFiles(o, r);
             } else if (o instanceof ray.surface.Mesh m) {   // geometry reads no files: the parser reads its OBJ
+                if (beforeFile != null) {
+                    beforeFile.beforeFile(scene, size(m.file));
+                }
                 readFiles(o, new ReadsFiles() {                // a class, not a lambda: no lambda on the parse path
                     @Override
                     public void readFiles(Path folder) throws SceneFormatException {
@@ -220,6 +225,15 @@ final class SceneObjects {
         } catch (SceneFormatException e) {
             throw new SceneFormatException(e.file(), e.line(), e.problem() + " (read for the " + currentType + " "
                     + o.getClass().getSimpleName() + " at " + file + ":" + currentLine + ")");
+        }
+    }
+
+    /** The size of the file {@code name} names in the scene file's folder, or -1 (the reader says why, if it matters). */
+    private long size(String name) {
+        try {
+            return java.nio.file.Files.size(folder().resolve(name));
+        } catch (java.io.IOException | RuntimeException e) {
+            return -1;
         }
     }
 

@@ -194,6 +194,34 @@ class CommandLineProcessTest {
         assertTrue(Files.size(dir.resolve("short.png")) > 0);
     }
 
+    /**
+     * A scene with large OBJ files is judged before they are read (JitPolicy.isLongBeforeFiles): the launcher
+     * starts again before the parser reads the mesh (here a 17 MB file of zeros that no parse could accept),
+     * and a short render of the same mesh is not sent away.
+     */
+    @Test
+    void longMeshRenderStartsTheLauncherAgainBeforeReadingTheObjFile() throws Exception {
+        Path fake = dir.resolve("fake-launcher");
+        Files.writeString(fake, "#!/bin/sh\necho \"$RAYTRACER_JIT|$*\" > " + dir.resolve("relaunched.txt") + "\nexit 7\n");
+        assertTrue(fake.toFile().setExecutable(true));
+        try (java.io.RandomAccessFile f = new java.io.RandomAccessFile(dir.resolve("big.obj").toFile(), "rw")) {
+            f.setLength(17L << 20);   // sparse: never written, never read
+        }
+        String scene = "Camera Camera\nLight AreaLight\nVector3d position [0 5 0]\nint samples 4\n\n"
+                + "Material Diffuse m\n\nSurface Mesh\nString file big.obj\nref material m\n";
+        Files.writeString(dir.resolve("mesh-long.txt"), "Width 1920\nHeight 1080\n" + scene);   // 35 M rays
+        Files.writeString(dir.resolve("mesh-short.txt"), "Width 64\nHeight 48\n" + scene);
+        Map<String, String> env = Map.of("RAYTRACER_RELAUNCH", fake.toString());
+        Result r = raytracer(null, env, null, "-q", "mesh-long.txt");
+        assertEquals(7, r.status(), r.err());
+        assertEquals("", r.err(), "the OBJ file was not read");
+        assertEquals("long|-q mesh-long.txt", Files.readString(dir.resolve("relaunched.txt")).trim());
+        Files.delete(dir.resolve("relaunched.txt"));
+        Result s = raytracer(null, env, null, "-q", "mesh-short.txt");
+        assertTrue(s.err().contains("big.obj"), s.err());   // read here, and refused
+        assertFalse(Files.exists(dir.resolve("relaunched.txt")), "a short render of the mesh is not sent away");
+    }
+
     private static final String CLASS = """
             import java.util.Set;
             import javax.vecmath.Vector3d;
