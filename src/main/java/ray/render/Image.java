@@ -50,7 +50,7 @@ public final class Image implements java.io.Serializable {
         if (v >= 1) {
             return 255;
         }
-        return (int) Math.floor(255 * v + 0.5);
+        return (int) (255 * v + 0.5);   // floor: positive here, and (int) truncates (C1 calls StrictMath for Math.floor)
     }
 
     /** The 8-bit sRGB-less image the PNG holds (no gamma, as the scene format specifies). */

@@ -220,14 +220,17 @@ public final class PngEncoder {
 
     /** The Paeth residuals of row {@code cur} (previous row {@code prev}, 3 bytes per pixel). */
     private static void paeth(byte[] cur, byte[] prev, byte[] out, int o, int n) {
-        for (int i = 0; i < n; i++) {
-            int x = cur[i] & 0xFF;
-            int a = i >= 3 ? cur[i - 3] & 0xFF : 0;
-            int b = prev[i] & 0xFF;
-            int c = i >= 3 ? prev[i - 3] & 0xFF : 0;
-            int p = a + b - c, pa = Math.abs(p - a), pb = Math.abs(p - b), pc = Math.abs(p - c);
+        for (int i = 0; i < 3 && i < n; i++) {          // the first pixel: a = c = 0, so the predictor is b
+            out[o + i] = (byte) (cur[i] - prev[i]);
+        }
+        for (int i = 3; i < n; i++) {                    // no per-byte test for the first pixel, no Math.abs call
+            int a = cur[i - 3] & 0xFF, b = prev[i] & 0xFF, c = prev[i - 3] & 0xFF;
+            int pa = b - c, pb = a - c, pc = pa + pb;    // p - a, p - b and p - c for p = a + b - c
+            pa = pa < 0 ? -pa : pa;
+            pb = pb < 0 ? -pb : pb;
+            pc = pc < 0 ? -pc : pc;
             int pred = pa <= pb && pa <= pc ? a : pb <= pc ? b : c;
-            out[o + i] = (byte) (x - pred);
+            out[o + i] = (byte) (cur[i] - pred);
         }
     }
 
