@@ -43,16 +43,21 @@ public final class Bvh implements Accelerator {
 
     /** Count node visits and primitive tests in the RayQuery (-Dray.bvh.count=true; a constant the JIT folds). */
     static final boolean COUNT = Boolean.getBoolean("ray.bvh.count");
+    /** Floats per inner node in {@link #node}. */
+    static final int NODE = 14;
     /** Widens the far slab distance to cover rounding in the box test (pbrt: 1 + 2 gamma(3)). */
     private static final double SLAB_SLACK = 1 + 8 * 0x1p-53;
 
     private final Scene scene;
     private final int root;
     private final float[] rootBox;
-    /** Per inner node: 6 floats of the first child's box, then 6 of the second's. */
-    private final float[] nodeBox;
-    /** Per inner node: the two child references (node index, or {@code ~(first slot << 4 | count)}). */
-    private final int[] nodeChild;
+    /**
+     * Per inner node, {@value #NODE} floats: 6 of the first child's box (min xyz, max xyz), 6 of the
+     * second's, then the two child references as float bits (node index, or {@code ~(first slot << 4 |
+     * count)}): one array, so a visit reads one or two cache lines and the JIT checks its bounds once.
+     */
+    private final float[] node;
+    private final int nodeCount;
     /** Per leaf slot starting a run of one set's slots: set number << 4 | run length (other slots: unused). */
     private final int[] slotRun;
     /** Per leaf slot: the primitive's index within its set. */
@@ -67,8 +72,8 @@ public final class Bvh implements Accelerator {
         this.scene = scene;
         this.root = b.root;
         this.rootBox = b.rootBox;
-        this.nodeBox = b.nodeBox;
-        this.nodeChild = b.nodeChild;
+        this.node = pack(b.nodeBox, b.nodeChild);
+        this.nodeCount = b.nodeChild.length / 2;
         this.buildNanos = buildNanos;
         this.primitives = bounded.size() + unboundedList.size();
         int n = b.order.length;
@@ -97,7 +102,7 @@ public final class Bvh implements Accelerator {
             typeOf[i] = lastId;
             count[lastId]++;
         }
-        int[] order = b.order, leaves = leaves(root, nodeChild);
+        int[] order = b.order, leaves = leaves(root, b.nodeChild);
         groupLeavesByType(order, typeOf, leaves);
         // each set's surfaces in slot order, so a run of slots is a run of indices in its set
         Surface[][] members = new Surface[types.size()][];
@@ -139,6 +144,24 @@ public final class Bvh implements Accelerator {
     private static PrimitiveSet.Type typeOf(Surface s) {
         PrimitiveSet.Type t = s.packedType();
         return t == null ? SurfaceSet.TYPE : t;
+    }
+
+    /** The builder's boxes and child references, interleaved per node ({@link #node}). */
+    private static float[] pack(float[] box, int[] child) {
+        int n = child.length / 2;
+        float[] out = new float[NODE * n];
+        for (int i = 0; i < n; i++) {
+            System.arraycopy(box, 12 * i, out, NODE * i, 12);
+            for (int c = 0; c < 2; c++) {
+                int ref = child[2 * i + c];
+                float bits = Float.intBitsToFloat(ref);   // a leaf's reference may be a NaN's bits
+                if (Float.floatToRawIntBits(bits) != ref) {
+                    throw new IllegalStateException("this JVM does not keep a float's NaN bits: " + ref);
+                }
+                out[NODE * i + 12 + c] = bits;
+            }
+        }
+        return out;
     }
 
     /** Every leaf of the tree under {@code root}, as {@code first slot << 4 | count}. */
@@ -210,7 +233,7 @@ public final class Bvh implements Accelerator {
 
     /** Inner nodes (a tree of one leaf has none). */
     public int nodeCount() {
-        return nodeChild.length / 2;
+        return nodeCount;
     }
 
     public int primitiveCount() {
@@ -224,7 +247,7 @@ public final class Bvh implements Accelerator {
 
     /** Bytes held by the tree and its packed primitives (not the scene's Surface objects). */
     public long memoryBytes() {
-        long m = 4L * nodeBox.length + 4L * nodeChild.length + 4L * slotRun.length + 4L * slotIndex.length;
+        long m = 4L * node.length + 4L * slotRun.length + 4L * slotIndex.length;
         for (PrimitiveSet s : sets) {
             m += s.memoryBytes();
         }
@@ -269,17 +292,15 @@ public final class Bvh implements Accelerator {
         }
         double ox = q.ox, oy = q.oy, oz = q.oz, tMin = q.tMin;
         double ix = 1 / q.dx, iy = 1 / q.dy, iz = 1 / q.dz;
-        // near/far plane offsets in a 6-float box, from the direction's signs
-        int nx = ix < 0 ? 3 : 0, ny = iy < 0 ? 4 : 1, nz = iz < 0 ? 5 : 2;
-        int fx = 3 - nx, fy = 5 - ny, fz = 7 - nz;
+        // which of a box's two planes per axis is the near one, from the direction's signs
+        boolean sx = ix < 0, sy = iy < 0, sz = iz < 0;
         // the root's own box only when the root is a leaf: an inner root's children are tested anyway,
         // and most rays (all shadow rays) are inside the scene's box
-        if (root < 0 && !(slabs(rootBox, 0, nx, ny, nz, fx, fy, fz, ox, oy, oz, ix, iy, iz, tMin, q.tMax)
-                <= Double.MAX_VALUE)) {
+        if (root < 0 && !(slabs(rootBox, 0, sx, sy, sz, ox, oy, oz, ix, iy, iz, tMin, q.tMax) <= Double.MAX_VALUE)) {
             return finish(q, rec);
         }
-        float[] nb = nodeBox;
-        int[] nc = nodeChild, run = slotRun, index = slotIndex;
+        float[] nb = node;
+        int[] run = slotRun, index = slotIndex;
         PrimitiveSet[] ps = sets;
         int[] stack = q.stack;
         double[] stackT = q.stackT;
@@ -287,30 +308,30 @@ public final class Bvh implements Accelerator {
         while (true) {
             if (ref >= 0) {
                 // inner node: test both children, go to the nearer, keep the farther with its entry distance
-                int o = 12 * ref;
+                int o = NODE * ref;
                 if (COUNT) {
                     q.nodeVisits++;
                 }
                 double best = q.tMax;
-                double lo0 = slabs(nb, o, nx, ny, nz, fx, fy, fz, ox, oy, oz, ix, iy, iz, tMin, best);
-                double lo1 = slabs(nb, o + 6, nx, ny, nz, fx, fy, fz, ox, oy, oz, ix, iy, iz, tMin, best);
+                double lo0 = slabs(nb, o, sx, sy, sz, ox, oy, oz, ix, iy, iz, tMin, best);
+                double lo1 = slabs(nb, o + 6, sx, sy, sz, ox, oy, oz, ix, iy, iz, tMin, best);
                 boolean h0 = lo0 <= Double.MAX_VALUE, h1 = lo1 <= Double.MAX_VALUE;
                 if (h0 && h1) {
                     if (lo1 < lo0) {
-                        stack[sp] = nc[2 * ref];
+                        stack[sp] = Float.floatToRawIntBits(nb[o + 12]);
                         stackT[sp++] = lo0;
-                        ref = nc[2 * ref + 1];
+                        ref = Float.floatToRawIntBits(nb[o + 13]);
                     } else {
-                        stack[sp] = nc[2 * ref + 1];
+                        stack[sp] = Float.floatToRawIntBits(nb[o + 13]);
                         stackT[sp++] = lo1;
-                        ref = nc[2 * ref];
+                        ref = Float.floatToRawIntBits(nb[o + 12]);
                     }
                     continue;
                 } else if (h0) {
-                    ref = nc[2 * ref];
+                    ref = Float.floatToRawIntBits(nb[o + 12]);
                     continue;
                 } else if (h1) {
-                    ref = nc[2 * ref + 1];
+                    ref = Float.floatToRawIntBits(nb[o + 13]);
                     continue;
                 }
             } else {
@@ -377,41 +398,40 @@ public final class Bvh implements Accelerator {
         }
         double ox = q.ox, oy = q.oy, oz = q.oz, tMin = q.tMin, tMax = q.tMax;
         double ix = 1 / q.dx, iy = 1 / q.dy, iz = 1 / q.dz;
-        int nx = ix < 0 ? 3 : 0, ny = iy < 0 ? 4 : 1, nz = iz < 0 ? 5 : 2;
-        int fx = 3 - nx, fy = 5 - ny, fz = 7 - nz;
-        if (root < 0 && !(slabs(rootBox, 0, nx, ny, nz, fx, fy, fz, ox, oy, oz, ix, iy, iz, tMin, tMax) <= Double.MAX_VALUE)) {
+        boolean sx = ix < 0, sy = iy < 0, sz = iz < 0;
+        if (root < 0 && !(slabs(rootBox, 0, sx, sy, sz, ox, oy, oz, ix, iy, iz, tMin, tMax) <= Double.MAX_VALUE)) {
             if (cache) {
                 q.occluderSet[slot] = -1;
             }
             return false;
         }
-        float[] nb = nodeBox;
-        int[] nc = nodeChild, run = slotRun, index = slotIndex;
+        float[] nb = node;
+        int[] run = slotRun, index = slotIndex;
         PrimitiveSet[] ps = sets;
         int[] stack = q.stack;
         int sp = 0, ref = root;
         while (true) {
             if (ref >= 0) {
-                int o = 12 * ref;
+                int o = NODE * ref;
                 if (COUNT) {
                     q.nodeVisits++;
                 }
-                double lo0 = slabs(nb, o, nx, ny, nz, fx, fy, fz, ox, oy, oz, ix, iy, iz, tMin, tMax);
-                double lo1 = slabs(nb, o + 6, nx, ny, nz, fx, fy, fz, ox, oy, oz, ix, iy, iz, tMin, tMax);
+                double lo0 = slabs(nb, o, sx, sy, sz, ox, oy, oz, ix, iy, iz, tMin, tMax);
+                double lo1 = slabs(nb, o + 6, sx, sy, sz, ox, oy, oz, ix, iy, iz, tMin, tMax);
                 boolean h0 = lo0 <= Double.MAX_VALUE, h1 = lo1 <= Double.MAX_VALUE;
                 if (h0) {
                     if (h1 && lo1 < lo0) {
-                        stack[sp++] = nc[2 * ref];
-                        ref = nc[2 * ref + 1];
+                        stack[sp++] = Float.floatToRawIntBits(nb[o + 12]);
+                        ref = Float.floatToRawIntBits(nb[o + 13]);
                         continue;
                     }
                     if (h1) {
-                        stack[sp++] = nc[2 * ref + 1];
+                        stack[sp++] = Float.floatToRawIntBits(nb[o + 13]);
                     }
-                    ref = nc[2 * ref];
+                    ref = Float.floatToRawIntBits(nb[o + 12]);
                     continue;
                 } else if (h1) {
-                    ref = nc[2 * ref + 1];
+                    ref = Float.floatToRawIntBits(nb[o + 13]);
                     continue;
                 }
             } else {
@@ -457,21 +477,37 @@ public final class Bvh implements Accelerator {
     }
 
     /**
-     * Slab test of the box at {@code b[o..o+5]} against the ray over [tMin, tMax]: the entry distance,
-     * or +infinity on a miss. The near and far planes per axis come from the direction's signs (offsets
-     * {@code n*}, {@code f*}); a NaN slab distance (origin on the plane, direction parallel) leaves the
-     * interval as it was: conservative. The one box test of the BVH (the launcher lets C1 inline it).
+     * Slab test of the box at {@code b[o..o+5]} (min xyz, max xyz) against the ray over [tMin, tMax]: the
+     * entry distance, or +infinity on a miss. Both planes of an axis are read at fixed offsets, the near
+     * one told by the direction's sign ({@code sx}: x decreasing along the ray, so the max plane is the
+     * near one); a NaN slab distance (origin on the plane, direction parallel) leaves the interval as it
+     * was: conservative. The one box test of the BVH (the launcher lets C1 inline it).
      */
-    private static double slabs(float[] b, int o, int nx, int ny, int nz, int fx, int fy, int fz,
+    private static double slabs(float[] b, int o, boolean sx, boolean sy, boolean sz,
                                 double ox, double oy, double oz, double ix, double iy, double iz,
                                 double tMin, double tMax) {
-        double lo = tMin, hi = tMax, t;
-        t = (b[o + nx] - ox) * ix; if (t > lo) lo = t;
-        t = (b[o + fx] - ox) * ix; if (t < hi) hi = t;
-        t = (b[o + ny] - oy) * iy; if (t > lo) lo = t;
-        t = (b[o + fy] - oy) * iy; if (t < hi) hi = t;
-        t = (b[o + nz] - oz) * iz; if (t > lo) lo = t;
-        t = (b[o + fz] - oz) * iz; if (t < hi) hi = t;
+        double lo = tMin, hi = tMax, n, f;
+        if (sx) {
+            n = (b[o + 3] - ox) * ix; f = (b[o] - ox) * ix;
+        } else {
+            n = (b[o] - ox) * ix; f = (b[o + 3] - ox) * ix;
+        }
+        if (n > lo) lo = n;
+        if (f < hi) hi = f;
+        if (sy) {
+            n = (b[o + 4] - oy) * iy; f = (b[o + 1] - oy) * iy;
+        } else {
+            n = (b[o + 1] - oy) * iy; f = (b[o + 4] - oy) * iy;
+        }
+        if (n > lo) lo = n;
+        if (f < hi) hi = f;
+        if (sz) {
+            n = (b[o + 5] - oz) * iz; f = (b[o + 2] - oz) * iz;
+        } else {
+            n = (b[o + 2] - oz) * iz; f = (b[o + 5] - oz) * iz;
+        }
+        if (n > lo) lo = n;
+        if (f < hi) hi = f;
         return lo <= hi * SLAB_SLACK ? lo : Double.POSITIVE_INFINITY;
     }
 }
