@@ -36,8 +36,9 @@ import ray.surface.Surface;
  * in the thread's {@link TraceContext#acceleratorScratch}.
  *
  * <p>Memory: 56 bytes per inner node (two float boxes and two references; about one inner node per
- * leaf), 8 bytes per leaf slot, and what the sets pack (per triangle 72 bytes of vertices and a 4-byte
- * reference to its {@code Surface}) ({@link #memoryBytes()}).
+ * leaf), 8 bytes per leaf slot where the BVH holds more than one set (none where it holds one), and
+ * what the sets pack (per triangle 72 bytes of vertices and a 4-byte reference to its {@code Surface})
+ * ({@link #memoryBytes()}).
  */
 public final class Bvh implements Accelerator {
 
@@ -58,11 +59,16 @@ public final class Bvh implements Accelerator {
      */
     private final float[] node;
     private final int nodeCount;
-    /** Per leaf slot starting a run of one set's slots: set number << 4 | run length (other slots: unused). */
+    /**
+     * Per leaf slot starting a run of one set's slots: set number << 4 | run length (other slots: unused).
+     * Null when there is one set: then a leaf is one run and slot i is the set's primitive i.
+     */
     private final int[] slotRun;
-    /** Per leaf slot: the primitive's index within its set. */
+    /** Per leaf slot: the primitive's index within its set (null when there is one set). */
     private final int[] slotIndex;
     private final PrimitiveSet[] sets;
+    /** The set when there is only one, else null. */
+    private final PrimitiveSet onlySet;
     /** Surfaces without bounds, tested against every ray (null when there are none). */
     private final PrimitiveSet unbounded;
     private final int primitives;
@@ -110,12 +116,11 @@ public final class Bvh implements Accelerator {
             members[t] = new Surface[count[t]];
             count[t] = 0;
         }
-        slotRun = new int[n];
-        slotIndex = new int[n];
+        int[] run = new int[n], index = new int[n];
         for (int i = 0; i < n; i++) {
             int p = order[i], t = typeOf[p];
             int k = count[t]++;
-            slotIndex[i] = k;
+            index[i] = k;
             members[t][k] = bounded.get(p);
         }
         sets = new PrimitiveSet[types.size()];
@@ -129,10 +134,14 @@ public final class Bvh implements Accelerator {
                 while (j < end && typeOf[order[j]] == t) {
                     j++;
                 }
-                slotRun[i] = t << 4 | (j - i);
+                run[i] = t << 4 | (j - i);
                 i = j;
             }
         }
+        boolean one = sets.length == 1;
+        onlySet = one ? sets[0] : null;
+        slotRun = one ? null : run;
+        slotIndex = one ? null : index;
         if (unboundedList.isEmpty()) {
             unbounded = null;
         } else {
@@ -247,7 +256,7 @@ public final class Bvh implements Accelerator {
 
     /** Bytes held by the tree and its packed primitives (not the scene's Surface objects). */
     public long memoryBytes() {
-        long m = 4L * node.length + 4L * slotRun.length + 4L * slotIndex.length;
+        long m = 4L * node.length + (slotRun == null ? 0 : 4L * slotRun.length + 4L * slotIndex.length);
         for (PrimitiveSet s : sets) {
             m += s.memoryBytes();
         }
@@ -302,6 +311,7 @@ public final class Bvh implements Accelerator {
         float[] nb = node;
         int[] run = slotRun, index = slotIndex;
         PrimitiveSet[] ps = sets;
+        PrimitiveSet one = onlySet;
         int[] stack = q.stack;
         double[] stackT = q.stackT;
         int sp = 0, ref = root;
@@ -335,14 +345,18 @@ public final class Bvh implements Accelerator {
                     continue;
                 }
             } else {
-                int leaf = ~ref;
-                for (int i = leaf >>> 4, end = i + (leaf & 15); i < end; ) {
-                    int r = run[i], len = r & 15, from = index[i];
-                    if (COUNT) {
-                        q.primitiveTests += len;
+                int leaf = ~ref, first = leaf >>> 4, end = first + (leaf & 15);
+                if (COUNT) {
+                    q.primitiveTests += leaf & 15;
+                }
+                if (one != null) {
+                    one.closestHit(first, end, first, q);
+                } else {
+                    for (int i = first; i < end; ) {
+                        int r = run[i], len = r & 15, from = index[i];
+                        ps[r >>> 4].closestHit(from, from + len, i, q);
+                        i += len;
                     }
-                    ps[r >>> 4].closestHit(from, from + len, i, q);
-                    i += len;
                 }
             }
             // pop the nearest pending subtree that may still hold a closer hit
@@ -408,6 +422,7 @@ public final class Bvh implements Accelerator {
         float[] nb = node;
         int[] run = slotRun, index = slotIndex;
         PrimitiveSet[] ps = sets;
+        PrimitiveSet one = onlySet;
         int[] stack = q.stack;
         int sp = 0, ref = root;
         while (true) {
@@ -435,19 +450,28 @@ public final class Bvh implements Accelerator {
                     continue;
                 }
             } else {
-                int leaf = ~ref;
-                for (int i = leaf >>> 4, end = i + (leaf & 15); i < end; ) {
-                    int r = run[i], len = r & 15, from = index[i];
-                    if (COUNT) {
-                        q.primitiveTests += len;
-                    }
-                    if (ps[r >>> 4].anyHit(from, from + len, q)) {
+                int leaf = ~ref, first = leaf >>> 4, end = first + (leaf & 15);
+                if (COUNT) {
+                    q.primitiveTests += leaf & 15;
+                }
+                if (one != null) {
+                    if (one.anyHit(first, end, q)) {
                         if (cache) {
-                            remember(q, slot, r >>> 4, from, len);
+                            remember(q, slot, 0, first, end - first);
                         }
                         return true;
                     }
-                    i += len;
+                } else {
+                    for (int i = first; i < end; ) {
+                        int r = run[i], len = r & 15, from = index[i];
+                        if (ps[r >>> 4].anyHit(from, from + len, q)) {
+                            if (cache) {
+                                remember(q, slot, r >>> 4, from, len);
+                            }
+                            return true;
+                        }
+                        i += len;
+                    }
                 }
             }
             if (sp == 0) {
