@@ -4,6 +4,8 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.logging.Level;
+import java.util.logging.Logger;
 import java.util.prefs.BackingStoreException;
 import java.util.prefs.Preferences;
 
@@ -11,11 +13,20 @@ import java.util.prefs.Preferences;
  * The scenes opened last, newest first, at most {@value #MAX}, kept in the user's preferences
  * ({@link Preferences}, so they survive a restart) as absolute paths. Files that no longer exist are
  * left out of the list and dropped from the store ({@link #prune}). A preferences store that cannot
- * be written only means the list is not remembered.
+ * be written only means the list is not remembered, so the JDK's own log lines about its store ("Created
+ * user preferences directory" on the first run, "Prefs file removed in background", a failed flush) are
+ * silenced: they would be the viewer's only lines on stderr that a user did not cause.
  */
 final class RecentFiles {
 
     static final int MAX = 8;
+    /** Held here: java.util.logging keeps loggers weakly, and a collected logger loses its level. */
+    private static final Logger STORE_LOG = Logger.getLogger("java.util.prefs");
+
+    static {
+        STORE_LOG.setLevel(Level.OFF);
+    }
+
     private final Preferences node;
 
     RecentFiles(Preferences node) {
