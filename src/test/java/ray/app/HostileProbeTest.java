@@ -491,6 +491,9 @@ class HostileProbeTest {
         pb.environment().remove("DISPLAY");
         if (mode == Mode.VIEW) {
             pb.environment().put("DISPLAY", display);
+            // The viewer keeps recent files in Preferences: a probe's own prefs root, never the user's, so
+            // concurrent runs do not see each other's prefs file vanish ("Prefs file removed in background").
+            pb.environment().put("JAVA_OPTS", "-Djava.util.prefs.userRoot=" + dir.resolveSibling(dir.getFileName() + ".prefs"));
         }
         p.env().forEach((k, v) -> {
             if (!k.equals(STDOUT_TO)) {
