@@ -116,7 +116,43 @@ public class Camera implements SceneObject {
     public void setRay(Ray r, double a, double b) {
         double dx = a * u.x + b * v.x - w.x, dy = a * u.y + b * v.y - w.y, dz = a * u.z + b * v.z - w.z;
         double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
-        r.set(eye.x, eye.y, eye.z, dx / len, dy / len, dz / len, 0, Double.POSITIVE_INFINITY, 0);
+        // the fields written here rather than by Ray.set: C1 does not inline that call (71 bytes)
+        Vector3d o = r.origin, d = r.direction;
+        o.x = eye.x;
+        o.y = eye.y;
+        o.z = eye.z;
+        d.x = dx / len;
+        d.y = dy / len;
+        d.z = dz / len;
+        r.tMin = 0;
+        r.tMax = Double.POSITIVE_INFINITY;
+        r.depth = 0;
+    }
+
+    /**
+     * True when this camera's rays are {@link #setRay}'s as written here (its class overrides no ray
+     * method): a renderer may then form them from {@link #rayTerms} tables, bit for bit the same.
+     */
+    public final boolean standardRays() {
+        return !OWN_RAYS.get(getClass());
+    }
+
+    /**
+     * {@link #setRay}'s products, once per image-plane coordinate: a u for each {@code a[k]} into
+     * {@code au[3k..3k+2]}, b v for each {@code b[k]} into {@code bv[3k..3k+2]}. The ray through (a, b)
+     * is then (a u + b v - w) normalised, which is {@code setRay(r, a, b)}'s direction.
+     */
+    public final void rayTerms(double[] a, double[] au, double[] b, double[] bv) {
+        for (int k = 0; k < a.length; k++) {
+            au[3 * k] = a[k] * u.x;
+            au[3 * k + 1] = a[k] * u.y;
+            au[3 * k + 2] = a[k] * u.z;
+        }
+        for (int k = 0; k < b.length; k++) {
+            bv[3 * k] = b[k] * v.x;
+            bv[3 * k + 1] = b[k] * v.y;
+            bv[3 * k + 2] = b[k] * v.z;
+        }
     }
 
     /** True for a class that makes its camera rays its own way (overrides a ray method): nothing is projected for it. */

@@ -130,6 +130,45 @@ class RendererTest {
         }
     }
 
+    /** A camera whose class makes its own rays (it overrides setRay) is rendered through them. */
+    static class OwnRays extends Camera {
+        @Override
+        public void setRay(Ray r, double a, double b) {
+            super.setRay(r, a, b);
+        }
+    }
+
+    private static Scene withCamera(Scene s, Camera c) {
+        c.eye = s.camera.eye;
+        c.target = s.camera.target;
+        c.up = s.camera.up;
+        c.yFOV = s.camera.yFOV;
+        c.aspect = s.camera.aspect;
+        s.camera = c;
+        return s;
+    }
+
+    /**
+     * The grid render forms a plain camera's rays from per-column and per-row tables (Renderer.gridTile):
+     * the image is bit for bit the one setRay's rays give, and a subclass's own setRay is still called.
+     */
+    @Test
+    void gridCameraRaysFromTablesAreSetRaysBitForBit() throws Exception {
+        Image tables = new Renderer(parse(BUSY)).threads(2).render();
+        Image own = new Renderer(withCamera(parse(BUSY), new OwnRays())).threads(2).render();
+        assertTrue(Arrays.equals(tables.rgb, own.rgb), "the tables' rays differ from setRay's");
+        Image up = new Renderer(withCamera(parse(BUSY), new OwnRays() {
+            @Override
+            public void setRay(Ray r, double a, double b) {
+                super.setRay(r, a, b);
+                r.direction.set(0, 1, 0);   // straight up, past everything: the background colour
+            }
+        })).threads(2).render();
+        for (int i = 0; i < up.rgb.length; i += 3) {
+            assertArrayEquals(new double[] {0.1, 0.2, 0.3}, Arrays.copyOfRange(up.rgb, i, i + 3), 1e-15, "pixel " + i / 3);
+        }
+    }
+
     /** The framework's renderAll() is [x][y] with y down from the top row. */
     @Test
     void renderAllIsIndexedXThenYFromTop() throws Exception {
