@@ -6,7 +6,8 @@ import ray.accel.PrimitiveSet;
 import ray.accel.RayQuery;
 
 /**
- * Mesh triangles packed for the BVH: 9 doubles of vertices each (as {@link TriangleSet}), the mesh and
+ * Mesh triangles packed for the BVH: 9 floats of vertices each (the mesh's own float coordinates, which
+ * the kernel widens to the same doubles {@link TriangleSet} holds for a {@link Triangle}), the mesh and
  * the triangle's number in it. Tested with {@link Triangle}'s watertight kernel; a two-sided mesh's
  * triangle missed from the front is tested from the back with the same kernel on the ray's x and y
  * axes swapped, which negates each edge function exactly: the same t and barycentrics, and no crack
@@ -31,21 +32,23 @@ final class MeshSet extends PrimitiveSet {
     }
 
     private final boolean twoSided;
-    private final double[] v;
+    private final float[] v;
     private final Mesh[] mesh;
     private final int[] index;
 
     private MeshSet(List<Surface> list, boolean twoSided) {
         this.twoSided = twoSided;
         int n = list.size();
-        v = new double[9 * n];
+        v = new float[9 * n];
         mesh = new Mesh[n];
         index = new int[n];
         for (int i = 0; i < n; i++) {
             MeshTriangle t = (MeshTriangle) list.get(i);
             mesh[i] = t.mesh;
             index[i] = t.index;
-            pack(t.mesh, t.index, v, 9 * i);
+            for (int k = 0; k < 9; k++) {
+                v[9 * i + k] = (float) t.mesh.coordinate(t.index, k / 3, k % 3);   // a float widened: exact
+            }
         }
     }
 
@@ -97,7 +100,8 @@ final class MeshSet extends PrimitiveSet {
 
     @Override
     public void closestHit(int from, int to, int slot, RayQuery q) {
-        double[] k = q.scratch, tv = v;
+        double[] k = q.scratch;
+        float[] tv = v;
         int at = setUp(q), b = at + Triangle.B0;
         int kx = (int) k[at], ky = (int) k[at + 1], kz = (int) k[at + 2];
         double sx = k[at + Triangle.SX], sy = k[at + Triangle.SY], sz = k[at + Triangle.SZ];
@@ -123,7 +127,8 @@ final class MeshSet extends PrimitiveSet {
 
     @Override
     public boolean anyHit(int from, int to, RayQuery q) {
-        double[] k = q.scratch, tv = v;
+        double[] k = q.scratch;
+        float[] tv = v;
         int at = setUp(q), b = at + Triangle.B0;
         int kx = (int) k[at], ky = (int) k[at + 1], kz = (int) k[at + 2];
         double sx = k[at + Triangle.SX], sy = k[at + Triangle.SY], sz = k[at + Triangle.SZ];
@@ -144,13 +149,16 @@ final class MeshSet extends PrimitiveSet {
 
     @Override
     public void fill(int i, RayQuery q, IntersectionRecord rec) {
-        double[] h = q.hitData;
-        Triangle.fill(v, 9 * i, h, 0, q.tMax, rec);
+        double[] h = q.hitData;   // barycentrics and side at 0..3, the corners widened to doubles at 4..12
+        for (int c = 0; c < 9; c++) {
+            h[4 + c] = v[9 * i + c];
+        }
+        Triangle.fill(h, 4, h, 0, q.tMax, rec);
         mesh[i].finishHit(index[i], h[0], h[1], h[2], h[3] != 0, rec);
     }
 
     @Override
     public long memoryBytes() {
-        return 8L * v.length + 4L * mesh.length + 4L * index.length;
+        return 4L * v.length + 4L * mesh.length + 4L * index.length;
     }
 }

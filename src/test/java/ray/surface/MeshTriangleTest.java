@@ -69,8 +69,8 @@ class MeshTriangleTest {
         assertEquals(2, set.size());
         assertSame(m, set.surface(0));
         assertSame(m, set.surface(1));
-        // nine doubles of corners and two ints (mesh, index) per triangle
-        assertEquals(2 * (9 * 8 + 4 + 4), set.memoryBytes());
+        // nine floats of corners and two ints (mesh, index) per triangle
+        assertEquals(2 * (9 * 4 + 4 + 4), set.memoryBytes());
     }
 
     @Test
