@@ -30,7 +30,8 @@ import ray.RayKind;
  * <li>with {@code --peers}: the installed peer renderers (POV-Ray, Tachyon, Sunflow, Mitsuba 3, as
  * {@code peers/run_peers.sh} runs them) timed in the same rounds, interleaved with this program, and
  * the ratio of this program's median wall and CPU time to each peer's, on every scene the peers' translator
- * has translated (run_peers.sh translate; not mesh1m: it has no area lights); and Embree's closest-hit and any-hit rates
+ * has translated (run_peers.sh translate), and on mesh1m, which the bench translates itself for the peers
+ * with area lights ({@link Mesh1mPeers}; Tachyon has none); and Embree's closest-hit and any-hit rates
  * ({@code peers/embree_rays.py}) next to this program's on the mesh100k camera rays.</li>
  * </ul>
  * Timings on a shared machine move by tens of percent; only the ratios measured in one run, with
@@ -202,19 +203,25 @@ public final class Bench {
         if (withPeers) {
             for (String p : Peers.ALL) {
                 List<String> missing = new ArrayList<>();
+                List<String> never = new ArrayList<>();
                 for (String s : scenes) {
-                    if (!peers.available(p, s)) {
+                    if (Peers.reason(p, s) != null) {
+                        never.add(s + " (" + Peers.reason(p, s) + ")");
+                    } else if (!peers.available(p, s)) {
                         missing.add(s);
                     }
                 }
                 if (missing.size() < scenes.size()) {
-                    peerCmds.put(p, null);
+                    peerCmds.put(p, null);   // (a peer that cannot render a scene still gets its column, saying why)
+                }
+                if (!never.isEmpty()) {
+                    out.println("- peer " + Peers.NAMES.get(p) + ": cannot render " + String.join(", ", never));
                 }
                 if (!missing.isEmpty()) {
                     out.println("- peer " + Peers.NAMES.get(p) + ": not installed or not translated in " + benchDir
                             + " for " + String.join(", ", missing) + " (in the bench directory: bash peers/run_peers.sh install scenes,"
                             + " then SCENES='classic mirrors spheres10k mesh100k classichd' bash peers/run_peers.sh translate;"
-                            + " mesh1m has an area light, which the translator does not know), left out there");
+                            + " mesh1m is translated by the bench itself, ray.bench.Mesh1mPeers), left out there");
                 }
             }
         }
@@ -301,7 +308,10 @@ public final class Bench {
         Map<String, Path> paths = new LinkedHashMap<>();
         Path dir = fromBench.isEmpty() ? null : sceneDirectory(benchDir, work, fromBench, out);
         for (String s : scenes) {
-            paths.put(s, s.equals(LongScenes.MESH1M) ? LongScenes.mesh1m(work.resolve("scenes"), out) : dir.resolve(s + ".txt"));
+            paths.put(s, s.equals(LongScenes.MESH1M) ? LongScenes.mesh1m(LongScenes.dir(work), out) : dir.resolve(s + ".txt"));
+        }
+        if (withPeers && paths.containsKey(LongScenes.MESH1M)) {
+            Mesh1mPeers.write(paths.get(LongScenes.MESH1M), out);
         }
         return paths;
     }

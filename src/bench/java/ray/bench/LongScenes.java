@@ -24,6 +24,11 @@ final class LongScenes {
     private LongScenes() {
     }
 
+    /** The folder of the generated long renders (and of the peers' translations of mesh1m) in the bench's work directory. */
+    static Path dir(Path work) {
+        return work.resolve("scenes");
+    }
+
     /** The mesh1m scene file in {@code dir}, written (with its OBJ) unless already there. */
     static Path mesh1m(Path dir, PrintStream out) throws IOException {
         Path scene = dir.resolve(MESH1M + ".txt"), obj = dir.resolve(MESH1M + ".obj");

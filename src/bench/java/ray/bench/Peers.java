@@ -9,7 +9,8 @@ import java.util.Map;
 
 /**
  * The peer renderers of the shared bench directory (POV-Ray, Tachyon, Sunflow, Mitsuba 3), run the way
- * {@code peers/run_peers.sh} runs them, and the ratio table of {@code gradle bench --peers}.
+ * {@code peers/run_peers.sh} runs them (on mesh1m: the bench's own translations, {@link Mesh1mPeers}), and
+ * the ratio table of {@code gradle bench --peers}.
  */
 final class Peers {
 
@@ -37,8 +38,39 @@ final class Peers {
         return venv.resolve("bin/python");
     }
 
+    /** Where peer {@code p}'s translation of mesh1m is: beside the scene, in the work directory ({@link Mesh1mPeers}). */
+    private Path mesh1m(String p, String ext) {
+        return Mesh1mPeers.dir(LongScenes.dir(work), p).resolve(LongScenes.MESH1M + ext).toAbsolutePath();
+    }
+
+    /** The bench's Whitted script with area lights, beside its Mitsuba translation of mesh1m. */
+    private Path mitsubaScript() {
+        return Mesh1mPeers.dir(LongScenes.dir(work), "mitsuba_llvm").resolve(Mesh1mPeers.MITSUBA_SCRIPT).toAbsolutePath();
+    }
+
+    /** Why peer {@code p} can never render scene {@code s} (the table says it), or null. */
+    static String reason(String p, String s) {
+        return p.equals("tachyon") && s.equals(LongScenes.MESH1M) ? Mesh1mPeers.NO_AREA_LIGHT : null;
+    }
+
     /** Whether peer {@code p} is installed and scene {@code s} translated for it. */
     boolean available(String p, String s) {
+        if (reason(p, s) != null) {
+            return false;
+        }
+        if (s.equals(LongScenes.MESH1M)) {
+            switch (p) {
+                case "pov":
+                    return onPath("povray") && Files.isRegularFile(mesh1m(p, ".pov"));
+                case "sunflow":
+                    return Files.isRegularFile(Path.of("/usr/share/java/sunflow.jar"))
+                            && Files.isRegularFile(benchDir.resolve("peers/sunflow/SunflowRender.class"))
+                            && Files.isRegularFile(mesh1m(p, ".sc"));
+                default:
+                    return Files.isExecutable(venvPython()) && Files.isRegularFile(mesh1m(p, ".xml"))
+                            && Files.isRegularFile(mitsubaScript());
+            }
+        }
         switch (p) {
             case "pov":
                 return onPath("povray") && Files.isRegularFile(benchDir.resolve("peers/build/pov/" + s + ".pov"));
@@ -56,6 +88,17 @@ final class Peers {
     /** The command line run_peers.sh uses for a peer (run in the bench directory). */
     List<String> command(String p, String s) {
         String png = work.resolve("peer_" + p + ".png").toAbsolutePath().toString();
+        if (s.equals(LongScenes.MESH1M)) {   // translated by Mesh1mPeers into the work directory
+            switch (p) {
+                case "pov":
+                    return List.of("povray", mesh1m(p, ".ini").toString(), "+I" + mesh1m(p, ".pov"), "+O" + png);
+                case "sunflow":
+                    return List.of("java", "-cp", "/usr/share/java/sunflow.jar:peers/sunflow", "SunflowRender", mesh1m(p, ".sc").toString(), png);
+                default:
+                    return List.of(venvPython().toString(), mitsubaScript().toString(), "llvm_ad_rgb",
+                            mesh1m(p, ".xml").toString(), png);
+            }
+        }
         switch (p) {
             case "pov":
                 return List.of("povray", "peers/build/pov/" + s + ".ini", "+Ipeers/build/pov/" + s + ".pov", "+O" + png);
@@ -114,7 +157,8 @@ final class Peers {
                 for (String p : peers) {
                     List<Double> l = t.get(p);
                     if (l == null || l.isEmpty()) {
-                        row.append(" n/a | n/a |");
+                        String why = reason(p, s);
+                        row.append(why == null ? " n/a | n/a |" : " n/a (" + why + ") | n/a |");
                         continue;
                     }
                     double theirs = Bench.median(l);
