@@ -1,7 +1,6 @@
 package ray.bench;
 
 import java.io.BufferedReader;
-import java.io.BufferedWriter;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.PrintStream;
@@ -9,7 +8,6 @@ import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.LinkedHashMap;
@@ -35,7 +33,7 @@ final class Mesh1mPeers {
     static final String NO_AREA_LIGHT = "no area lights";
     /** The bench's Whitted script for Mitsuba with area lights (a resource of this class, copied beside the scene). */
     static final String MITSUBA_SCRIPT = "mitsuba_whitted_area.py";
-    /** Changes whenever the translations change, so old files are written again. */
+    /** Changes whenever the translations change, so old files are written again (the stamp also holds the scene's and the script's hashes). */
     private static final String VERSION = "mesh1m peers v1 (ray.bench.Mesh1mPeers)";
 
     private Mesh1mPeers() {
@@ -61,7 +59,16 @@ final class Mesh1mPeers {
         Scene s = Scene.parse(text);
         Path obj = sceneDir.resolve(s.meshFile);
         Path stamp = sceneDir.resolve("peers/" + LongScenes.MESH1M + ".stamp");
-        String expected = VERSION + "\n" + text.lines().findFirst().orElse("") + "\n" + Files.size(obj) + "\n";
+        byte[] script;
+        try (InputStream in = Mesh1mPeers.class.getResourceAsStream(MITSUBA_SCRIPT)) {
+            if (in == null) {
+                throw new IOException("resource " + MITSUBA_SCRIPT + " missing from the bench's class path");
+            }
+            script = in.readAllBytes();
+        }
+        // the scene's first line (LongScenes' header), a hash of all of it and of the script, the OBJ's size
+        String expected = VERSION + "\n" + text.lines().findFirst().orElse("") + "\n" + text.hashCode() + " "
+                + Arrays.hashCode(script) + " " + Files.size(obj) + "\n";
         if (Files.isRegularFile(stamp) && Files.readString(stamp, StandardCharsets.UTF_8).equals(expected)) {
             return;
         }
@@ -83,12 +90,7 @@ final class Mesh1mPeers {
             Files.writeString(mi.resolve(name + "_" + e.getKey() + ".obj"), e.getValue(), StandardCharsets.UTF_8);
         }
         Files.writeString(mi.resolve(name + ".xml"), mitsubaXml(s, "../../" + s.meshFile, name), StandardCharsets.UTF_8);
-        try (InputStream in = Mesh1mPeers.class.getResourceAsStream(MITSUBA_SCRIPT)) {
-            if (in == null) {
-                throw new IOException("resource " + MITSUBA_SCRIPT + " missing from the bench's class path");
-            }
-            Files.copy(in, mi.resolve(MITSUBA_SCRIPT), StandardCopyOption.REPLACE_EXISTING);
-        }
+        Files.write(mi.resolve(MITSUBA_SCRIPT), script);
         Files.writeString(stamp, expected, StandardCharsets.UTF_8);
     }
 
