@@ -116,17 +116,12 @@ final class SceneObjects {
      */
     void begin(String type, Class<?> base, String className, Class<?> c, String name, int line) throws SceneFormatException {
         Object o;
-        try {
-            Constructor<?> k = constructors.get(c);
-            if (k == null) {
-                k = c.getConstructor();
-                constructors.put(c, k);
-            }
-            o = k.newInstance();
-        } catch (InvocationTargetException e) {
-            throw new SceneFormatException(file, line, "creating " + className + " failed: " + Parser.describe(e.getCause()));
-        } catch (ReflectiveOperationException | RuntimeException | LinkageError e) {
-            throw new SceneFormatException(file, line, "creating " + className + " failed: " + Parser.describe(e));
+        if (c == ray.surface.Triangle.class) {          // the classes a large scene repeats, made without reflection:
+            o = new ray.surface.Triangle();            // past 15 reflective calls the JDK generates an accessor class
+        } else if (c == ray.surface.Sphere.class) {     // (its generator's 17 classes load outside the CDS archive)
+            o = new ray.surface.Sphere();
+        } else {
+            o = create(c, className, line);
         }
         current = o;
         currentType = type;
@@ -138,6 +133,22 @@ final class SceneObjects {
             named.put(name, o);
             namedLines.put(name, line);
             scene.name(o, name);
+        }
+    }
+
+    /** A new {@code c} by its public no-argument constructor (looked up once per file); a failure is reported at {@code line}. */
+    private Object create(Class<?> c, String className, int line) throws SceneFormatException {
+        try {
+            Constructor<?> k = constructors.get(c);
+            if (k == null) {
+                k = c.getConstructor();
+                constructors.put(c, k);
+            }
+            return k.newInstance();
+        } catch (InvocationTargetException e) {
+            throw new SceneFormatException(file, line, "creating " + className + " failed: " + Parser.describe(e.getCause()));
+        } catch (ReflectiveOperationException | RuntimeException | LinkageError e) {
+            throw new SceneFormatException(file, line, "creating " + className + " failed: " + Parser.describe(e));
         }
     }
 
