@@ -7,7 +7,6 @@ import de.javagl.obj.ObjReader;
 import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.InputStream;
-import java.io.InputStreamReader;
 import java.io.Reader;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.AccessDeniedException;
@@ -100,7 +99,7 @@ public final class ObjFile {
         ray.io.InputFiles.read(path);
         LineReader reader = null;
         try (InputStream in = Files.newInputStream(path)) {
-            reader = new LineReader(new InputStreamReader(in, StandardCharsets.UTF_8));
+            reader = new LineReader(in);
             Builder b = new Builder(reader, shown);
             ObjReader.read(reader, b);
             b.finish();
@@ -146,18 +145,33 @@ public final class ObjFile {
         }
     }
 
-    /** Hands the library one line at a time and remembers which (the library reads only through readLine). */
+    /**
+     * Hands the library one line at a time and remembers which (the library reads only through
+     * readLine). Lines are cut from the file's bytes as {@link BufferedReader#readLine} cuts them (at
+     * {@code \n}, {@code \r} or {@code \r\n}) and decoded as UTF-8 with malformed bytes replaced, as an
+     * {@code InputStreamReader} would: a line of ASCII bytes (every line of a usual OBJ file) becomes a
+     * String by a plain copy. The checks read the line's chars from an array kept for the purpose, not
+     * through {@code String.charAt} (a million-line file is read before the JIT's second tier).
+     */
     private static final class LineReader extends BufferedReader {
+        private final InputStream in;
+        private byte[] buf = new byte[1 << 16];
+        private int pos, end;
+        private boolean eof, skipLF;
         int line;
         String text = "";
+        /** The current line's chars, tabs as spaces (the library splits at spaces only), and their count. */
+        char[] chars = new char[128];
+        int length;
 
-        LineReader(Reader in) {
-            super(in, 1 << 16);
+        LineReader(InputStream in) {
+            super(Reader.nullReader(), 1);
+            this.in = in;
         }
 
         @Override
         public String readLine() throws IOException {
-            String s = super.readLine();
+            String s = nextLine();
             if (s != null) {
                 line++;
                 if (line == 1 && s.startsWith("\uFEFF")) {
@@ -168,9 +182,80 @@ public final class ObjFile {
                     throw new Bad(line, "binary data (byte 0x00), expected a text OBJ file");
                 }
                 s = s.replace('\t', ' ');   // tabs separate like spaces (the library splits at spaces only)
-                exact(s);
+                int n = s.length();
+                if (n > chars.length) {
+                    chars = new char[Math.max(n, 2 * chars.length)];
+                }
+                s.getChars(0, n, chars, 0);
+                length = n;
+                exact();
             }
             return s;
+        }
+
+        /** The next line of the file without its terminator, or null at the end. */
+        private String nextLine() throws IOException {
+            int from = pos;
+            boolean ascii = true;
+            while (true) {
+                byte[] b = buf;
+                int i = pos, e = end;
+                if (skipLF && i < e) {
+                    skipLF = false;
+                    if (b[i] == '\n') {
+                        from = ++i;
+                    }
+                }
+                for (; i < e; i++) {
+                    byte c = b[i];
+                    if (c == '\n' || c == '\r') {
+                        pos = i + 1;
+                        skipLF = c == '\r';
+                        return decode(b, from, i, ascii);
+                    }
+                    if (c < 0) {
+                        ascii = false;
+                    }
+                }
+                pos = i;
+                if (!eof) {
+                    boolean more = fill(from);
+                    from = 0;     // fill moved the line's start to the front
+                    if (more) {
+                        continue;
+                    }
+                    eof = true;
+                }
+                return pos == from ? null : decode(buf, from, pos, ascii);   // the last line, without a terminator
+            }
+        }
+
+            /**
+         * Moves bytes [from, end) to the buffer's front (growing it when they fill it) and reads more after
+         * them; false at the end of the file (the bytes moved all the same).
+         */
+        private boolean fill(int from) throws IOException {
+            int kept = end - from;
+            if (kept == buf.length) {
+                buf = Arrays.copyOf(buf, 2 * buf.length);    // a line longer than the buffer
+            } else if (from > 0) {
+                System.arraycopy(buf, from, buf, 0, kept);
+            }
+            pos -= from;
+            end = kept;
+            int n = in.read(buf, end, buf.length - end);
+            while (n == 0) {
+                n = in.read(buf, end, buf.length - end);
+            }
+            if (n < 0) {
+                return false;
+            }
+            end += n;
+            return true;
+        }
+
+        private static String decode(byte[] b, int from, int to, boolean ascii) {
+            return new String(b, from, to - from, ascii ? StandardCharsets.ISO_8859_1 : StandardCharsets.UTF_8);
         }
 
         /**
@@ -180,40 +265,48 @@ public final class ObjFile {
          * line's runs of non-space characters up to a '#', after stripping (a scan of the characters: a
          * regex compiled per line cost a million-line file seconds).
          */
-        private void exact(String s) {
-            int hash = s.indexOf('#');
-            String t = (hash < 0 ? s : s.substring(0, hash)).strip();
-            int n = t.length(), end = t.indexOf(' ');
-            String key = end < 0 ? t : t.substring(0, end);
-            boolean decimals;
-            switch (key) {
-                case "v", "vn", "vt" -> decimals = true;
-                case "f" -> decimals = false;
-                default -> {
-                    return;     // other statements are ignored
-                }
+        private void exact() {
+            char[] t = chars;
+            int n = length, hash = 0;
+            while (hash < n && t[hash] != '#') {
+                hash++;
             }
-            for (int i = key.length(); i < n; ) {
-                if (t.charAt(i) == ' ') {
+            int from = stripStart(t, 0, hash), to = stripEnd(t, from, hash);
+            int key = from;
+            while (key < to && t[key] != ' ') {
+                key++;
+            }
+            boolean decimals;
+            int k = key - from;
+            char k0 = k > 0 ? t[from] : 0, k1 = k > 1 ? t[from + 1] : 0;
+            if (k == 1 && k0 == 'v' || k == 2 && k0 == 'v' && (k1 == 'n' || k1 == 't')) {
+                decimals = true;
+            } else if (k == 1 && k0 == 'f') {
+                decimals = false;
+            } else {
+                return;     // other statements are ignored
+            }
+            for (int i = key; i < to; ) {
+                if (t[i] == ' ') {
                     i++;
                     continue;
                 }
-                int j = t.indexOf(' ', i);
-                if (j < 0) {
-                    j = n;
+                int j = i;
+                while (j < to && t[j] != ' ') {
+                    j++;
                 }
                 if (decimals) {
-                    if (!Values.isDecimal(t.substring(i, j))) {
-                        throw new Bad(line, "cannot read " + Values.quote(text.strip()) + " (" + expected(s) + ")");
+                    if (!Tokens.isDecimal(t, i, j)) {
+                        throw new Bad(line, "cannot read " + Values.quote(text.strip()) + " (" + expected(text) + ")");
                     }
                 } else {
                     for (int p = i; p <= j; ) {     // the corner's parts, split at '/' (empty parts kept)
-                        int q = t.indexOf('/', p);
-                        if (q < 0 || q > j) {
-                            q = j;
+                        int q = p;
+                        while (q < j && t[q] != '/') {
+                            q++;
                         }
                         if (tooLarge(t, p, q)) {
-                            String part = t.substring(p, q);
+                            String part = new String(t, p, q - p);
                             throw new Bad(line, Values.quote(text.strip()) + " has the index " + part
                                     + ", beyond any file's vertices (expected indices from 1 to 2147483647, or negative ones counting back)");
                         }
@@ -224,21 +317,44 @@ public final class ObjFile {
             }
         }
 
+        /** The first index in [from, to) of a char that is not {@link Character#isWhitespace} ({@code String.strip}'s). */
+        static int stripStart(char[] t, int from, int to) {
+            while (from < to && Character.isWhitespace(t[from])) {
+                from++;
+            }
+            return from;
+        }
+
+        /** One past the last index in [from, to) of a char that is not {@link Character#isWhitespace}. */
+        static int stripEnd(char[] t, int from, int to) {
+            while (to > from && Character.isWhitespace(t[to - 1])) {
+                to--;
+            }
+            return to;
+        }
+
         /** {@code t[from, to)} is a whole number (digits, perhaps after '-') beyond an int: the library would wrap it round. */
-        private static boolean tooLarge(String t, int from, int to) {
-            int i = from < to && t.charAt(from) == '-' ? from + 1 : from;
+        private static boolean tooLarge(char[] t, int from, int to) {
+            int i = from < to && t[from] == '-' ? from + 1 : from;
             if (i == to) {
                 return false;
             }
             for (int k = i; k < to; k++) {
-                if (t.charAt(k) < '0' || t.charAt(k) > '9') {
+                if (t[k] < '0' || t[k] > '9') {
                     return false;       // not a number at all: the library's own message says so
                 }
             }
-            while (i < to - 1 && t.charAt(i) == '0') {
+            while (i < to - 1 && t[i] == '0') {
                 i++;        // leading zeros (keeping one digit)
             }
-            return to - i > 10 || Long.parseLong(t, i, to, 10) > Integer.MAX_VALUE;
+            if (to - i > 10) {
+                return true;
+            }
+            long v = 0;
+            for (int k = i; k < to; k++) {
+                v = 10 * v + (t[k] - '0');
+            }
+            return v > Integer.MAX_VALUE;
         }
     }
 
@@ -368,46 +484,60 @@ public final class ObjFile {
          * those of an earlier face, so {@code f 1//1 2 3} would silently borrow normals.
          */
         private void checkCorners(int n, boolean normals, boolean texCoords) {
-            String c = reader.text.strip();
-            c = c.substring(1).strip();
+            char[] c = reader.chars;
+            int len = reader.length;
+            int from = LineReader.stripStart(c, 0, len), to = LineReader.stripEnd(c, from, len);
+            if (from == to) {
+                throw new IllegalStateException("an empty line continues a face");   // read as the library's failure
+            }
+            from = LineReader.stripStart(c, from + 1, to);      // after the 'f'
             // the corners: runs of characters other than regex \s (scanned: no regex per face)
-            int count = c.isEmpty() ? 1 : 0;
-            for (int i = 0, len = c.length(); i < len; ) {
-                int j = cornerEnd(c, i);
+            int count = from == to ? 1 : 0;
+            for (int i = from; i < to; ) {
+                int j = cornerEnd(c, i, to);
                 count++;
-                i = skipSpace(c, j);
+                i = skipSpace(c, j, to);
             }
             if (count != n) {
                 return;    // written with spaces around the slashes: the library's own reading stands
             }
-            for (int i = 0, len = c.length(); i < len || (i == 0 && len == 0); ) {
-                int end = cornerEnd(c, i);
-                int a = c.indexOf('/', i);
+            for (int i = from; i < to || (i == from && from == to); ) {
+                int end = cornerEnd(c, i, to);
+                int a = i;
+                while (a < end && c[a] != '/') {
+                    a++;
+                }
                 a = a < end ? a : -1;
-                int b = a < 0 ? -1 : c.indexOf('/', a + 1);
-                b = b >= 0 && b < end ? b : -1;
+                int b = -1;
+                if (a >= 0) {
+                    b = a + 1;
+                    while (b < end && c[b] != '/') {
+                        b++;
+                    }
+                    b = b < end ? b : -1;
+                }
                 boolean hasT = a >= 0 && (b < 0 ? a + 1 < end : b > a + 1);
                 boolean hasN = b >= 0 && b + 1 < end;
                 if (hasT != texCoords || hasN != normals) {
                     throw bad("writes its corners differently (expected every corner as v, v/vt, v//vn or v/vt/vn alike)");
                 }
-                if (len == 0) {
+                if (from == to) {
                     break;
                 }
-                i = skipSpace(c, end);
+                i = skipSpace(c, end, to);
             }
         }
 
-        /** The end of the corner starting at {@code i}: the next regex {@code \s} character, or the end. */
-        private static int cornerEnd(String c, int i) {
-            while (i < c.length() && !space(c.charAt(i))) {
+        /** The end of the corner starting at {@code i}: the next regex {@code \s} character, or {@code to}. */
+        private static int cornerEnd(char[] c, int i, int to) {
+            while (i < to && !space(c[i])) {
                 i++;
             }
             return i;
         }
 
-        private static int skipSpace(String c, int i) {
-            while (i < c.length() && space(c.charAt(i))) {
+        private static int skipSpace(char[] c, int i, int to) {
+            while (i < to && space(c[i])) {
                 i++;
             }
             return i;
