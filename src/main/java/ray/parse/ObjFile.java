@@ -161,8 +161,17 @@ public final class ObjFile {
         int line;
         String text = "";
         /** The current line's chars, tabs as spaces (the library splits at spaces only), and their count. */
-        char[] chars = new char[128];
+        char[] chars = new char[0];
         int length;
+        /** The current line is all ASCII; it has a tab; it has a NUL. */
+        private boolean ascii, tab, nul;
+        /**
+         * For a face line of printable ASCII without a comment, what {@link Builder#checkCorners} would
+         * find in it: its corners (the words after the 'f') and their common pattern (1: texture index, 2:
+         * normal index; -1 when they differ). {@link #cornersKnown} is false for any other line.
+         */
+        boolean cornersKnown;
+        int cornerCount, cornerPattern;
 
         LineReader(InputStream in) {
             super(Reader.nullReader(), 1);
@@ -174,31 +183,47 @@ public final class ObjFile {
             String s = nextLine();
             if (s != null) {
                 line++;
-                if (line == 1 && s.startsWith("\uFEFF")) {
-                    s = s.substring(1);      // a UTF-8 byte-order mark (as the scene parser skips it)
+                if (ascii) {    // the chars are in place already, tabs as spaces
+                    text = s;
+                    if (nul) {
+                        throw new Bad(line, "binary data (byte 0x00), expected a text OBJ file");
+                    }
+                    if (tab) {
+                        s = s.replace('\t', ' ');   // tabs separate like spaces (the library splits at spaces only)
+                    }
+                } else {
+                    if (line == 1 && s.startsWith("\uFEFF")) {
+                        s = s.substring(1);      // a UTF-8 byte-order mark (as the scene parser skips it)
+                    }
+                    text = s;
+                    if (s.indexOf('\0') >= 0) {
+                        throw new Bad(line, "binary data (byte 0x00), expected a text OBJ file");
+                    }
+                    s = s.replace('\t', ' ');
+                    length = s.length();
+                    if (length > chars.length) {
+                        chars = new char[length];
+                    }
+                    s.getChars(0, length, chars, 0);
                 }
-                text = s;
-                if (s.indexOf('\0') >= 0) {
-                    throw new Bad(line, "binary data (byte 0x00), expected a text OBJ file");
-                }
-                s = s.replace('\t', ' ');   // tabs separate like spaces (the library splits at spaces only)
-                int n = s.length();
-                if (n > chars.length) {
-                    chars = new char[Math.max(n, 2 * chars.length)];
-                }
-                s.getChars(0, n, chars, 0);
-                length = n;
                 exact();
             }
             return s;
         }
 
-        /** The next line of the file without its terminator, or null at the end. */
+        /**
+         * The next line of the file without its terminator, or null at the end. A line of ASCII bytes
+         * ({@link #ascii}) is also copied into {@link #chars}, tabs as spaces, in the same pass.
+         */
         private String nextLine() throws IOException {
             int from = pos;
-            boolean ascii = true;
+            boolean plain = true, tabs = false, zero = false;
             while (true) {
                 byte[] b = buf;
+                if (chars.length < b.length) {
+                    chars = Arrays.copyOf(chars, b.length);
+                }
+                char[] ch = chars;
                 int i = pos, e = end;
                 if (skipLF && i < e) {
                     skipLF = false;
@@ -208,14 +233,22 @@ public final class ObjFile {
                 }
                 for (; i < e; i++) {
                     byte c = b[i];
-                    if (c == '\n' || c == '\r') {
-                        pos = i + 1;
-                        skipLF = c == '\r';
-                        return decode(b, from, i, ascii);
+                    if (c <= '\r') {   // the rare bytes: line ends, tab, NUL, and every non-ASCII byte
+                        if (c == '\n' || c == '\r') {
+                            pos = i + 1;
+                            skipLF = c == '\r';
+                            return line(b, from, i, plain, tabs, zero);
+                        }
+                        if (c == '\t') {
+                            tabs = true;
+                            c = ' ';
+                        } else if (c == 0) {
+                            zero = true;
+                        } else if (c < 0) {
+                            plain = false;
+                        }
                     }
-                    if (c < 0) {
-                        ascii = false;
-                    }
+                    ch[i - from] = (char) c;
                 }
                 pos = i;
                 if (!eof) {
@@ -226,11 +259,19 @@ public final class ObjFile {
                     }
                     eof = true;
                 }
-                return pos == from ? null : decode(buf, from, pos, ascii);   // the last line, without a terminator
+                return pos == from ? null : line(buf, from, pos, plain, tabs, zero);   // the last line, without a terminator
             }
         }
 
-            /**
+        private String line(byte[] b, int from, int to, boolean plain, boolean tabs, boolean zero) {
+            ascii = plain;
+            tab = tabs;
+            nul = zero;
+            length = to - from;
+            return new String(b, from, to - from, plain ? StandardCharsets.ISO_8859_1 : StandardCharsets.UTF_8);
+        }
+
+        /**
          * Moves bytes [from, end) to the buffer's front (growing it when they fill it) and reads more after
          * them; false at the end of the file (the bytes moved all the same).
          */
@@ -254,10 +295,6 @@ public final class ObjFile {
             return true;
         }
 
-        private static String decode(byte[] b, int from, int to, boolean ascii) {
-            return new String(b, from, to - from, ascii ? StandardCharsets.ISO_8859_1 : StandardCharsets.UTF_8);
-        }
-
         /**
          * Reads numbers as the scene parser does, before the library does it more loosely: plain decimals
          * in v, vn and vt (no hex {@code 0x1p0}, no {@code 1f}/{@code 1d} suffix, no NaN), whole-number
@@ -266,9 +303,14 @@ public final class ObjFile {
          * regex compiled per line cost a million-line file seconds).
          */
         private void exact() {
+            cornersKnown = false;
             char[] t = chars;
             int n = length, hash = 0;
+            boolean printable = ascii;
             while (hash < n && t[hash] != '#') {
+                if (t[hash] < ' ') {
+                    printable = false;
+                }
                 hash++;
             }
             int from = stripStart(t, 0, hash), to = stripEnd(t, from, hash);
@@ -286,6 +328,7 @@ public final class ObjFile {
             } else {
                 return;     // other statements are ignored
             }
+            int corners = 0, pattern = 0;
             for (int i = key; i < to; ) {
                 if (t[i] == ' ') {
                     i++;
@@ -300,10 +343,18 @@ public final class ObjFile {
                         throw new Bad(line, "cannot read " + Values.quote(text.strip()) + " (" + expected(text) + ")");
                     }
                 } else {
+                    int s1 = -1, s2 = -1;       // the corner's first two slashes
                     for (int p = i; p <= j; ) {     // the corner's parts, split at '/' (empty parts kept)
                         int q = p;
                         while (q < j && t[q] != '/') {
                             q++;
+                        }
+                        if (q < j) {
+                            if (s1 < 0) {
+                                s1 = q;
+                            } else if (s2 < 0) {
+                                s2 = q;
+                            }
                         }
                         if (tooLarge(t, p, q)) {
                             String part = new String(t, p, q - p);
@@ -312,8 +363,19 @@ public final class ObjFile {
                         }
                         p = q + 1;
                     }
+                    // as checkCorners reads a corner: v, v/vt, v//vn, v/vt/vn
+                    boolean hasT = s1 >= 0 && (s2 < 0 ? s1 + 1 < j : s2 > s1 + 1);
+                    boolean hasN = s2 >= 0 && s2 + 1 < j;
+                    int own = (hasT ? 1 : 0) | (hasN ? 2 : 0);
+                    pattern = corners++ == 0 || pattern == own ? own : -1;
                 }
                 i = j;
+            }
+            // printable ASCII without '#': the words after the 'f' are exactly checkCorners's corners
+            if (!decimals && printable && hash == n) {
+                cornersKnown = true;
+                cornerCount = corners;
+                cornerPattern = pattern;
             }
         }
 
@@ -336,8 +398,8 @@ public final class ObjFile {
         /** {@code t[from, to)} is a whole number (digits, perhaps after '-') beyond an int: the library would wrap it round. */
         private static boolean tooLarge(char[] t, int from, int to) {
             int i = from < to && t[from] == '-' ? from + 1 : from;
-            if (i == to) {
-                return false;
+            if (to - i < 10) {
+                return false;   // nine digits at most: an int, or not a number (the library's message says so)
             }
             for (int k = i; k < to; k++) {
                 if (t[k] < '0' || t[k] > '9') {
@@ -484,6 +546,12 @@ public final class ObjFile {
          * those of an earlier face, so {@code f 1//1 2 3} would silently borrow normals.
          */
         private void checkCorners(int n, boolean normals, boolean texCoords) {
+            if (reader.cornersKnown) {      // found by the line's own check
+                if (reader.cornerCount == n && reader.cornerPattern != ((texCoords ? 1 : 0) | (normals ? 2 : 0))) {
+                    throw bad("writes its corners differently (expected every corner as v, v/vt, v//vn or v/vt/vn alike)");
+                }
+                return;
+            }
             char[] c = reader.chars;
             int len = reader.length;
             int from = LineReader.stripStart(c, 0, len), to = LineReader.stripEnd(c, from, len);
