@@ -215,7 +215,8 @@ public final class Bvh implements Accelerator {
         }
         List<Surface> bounded = new ArrayList<>(surfaces.size());
         List<Surface> unbounded = new ArrayList<>();
-        double[] box = new double[6 * surfaces.size()];
+        // rounded outward to floats here, as the builder keeps them: no double copy of every box
+        float[] box = new float[6 * surfaces.size()];
         Aabb scratch = new Aabb();
         for (Surface s : surfaces) {
             if (s.isDegenerate()) {
@@ -227,15 +228,14 @@ public final class Bvh implements Accelerator {
             }
             if (a.isFinite()) {
                 int i = bounded.size();
-                box[6 * i] = a.minX; box[6 * i + 1] = a.minY; box[6 * i + 2] = a.minZ;
-                box[6 * i + 3] = a.maxX; box[6 * i + 4] = a.maxY; box[6 * i + 5] = a.maxZ;
+                box[6 * i] = BvhBuilder.down(a.minX); box[6 * i + 1] = BvhBuilder.down(a.minY); box[6 * i + 2] = BvhBuilder.down(a.minZ);
+                box[6 * i + 3] = BvhBuilder.up(a.maxX); box[6 * i + 4] = BvhBuilder.up(a.maxY); box[6 * i + 5] = BvhBuilder.up(a.maxZ);
                 bounded.add(s);
             } else {
                 unbounded.add(s);
             }
         }
-        // (a copy only when some surfaces were left out: for a mesh of 100k triangles it is 5 MB)
-        BvhBuilder b = new BvhBuilder(bounded.size() == surfaces.size() ? box : Arrays.copyOf(box, 6 * bounded.size()));
+        BvhBuilder b = new BvhBuilder(box, bounded.size());
         b.build();
         return new Bvh(scene, b, bounded, unbounded, System.nanoTime() - t0);
     }

@@ -49,22 +49,40 @@ final class BvhBuilder {
 
     /** {@code box}: 6 doubles (min xyz, max xyz) per primitive. */
     BvhBuilder(double[] box) {
-        count = box.length / 6;
+        this(rounded(box), box.length / 6);
+    }
+
+    /**
+     * {@code box}: 6 floats (min xyz, max xyz) per primitive for the first {@code count}, each rounded
+     * outward from the primitive's double box ({@link #down}, {@link #up}); the builder keeps the array
+     * and reorders it.
+     */
+    BvhBuilder(float[] box, int count) {
+        this.count = count;
         if (count > MAX_PRIMITIVES) {
             throw new IllegalArgumentException("too many primitives for one BVH: " + count + " (at most " + MAX_PRIMITIVES + ")");
         }
-        primBox = new float[6 * count];
+        primBox = box;
         centroid = new float[3 * count];
         order = new int[count];
         for (int i = 0; i < count; i++) {
-            for (int a = 0; a < 3; a++) {
-                float lo = down(box[6 * i + a]), hi = up(box[6 * i + 3 + a]);
-                primBox[6 * i + a] = lo;
-                primBox[6 * i + 3 + a] = hi;
-                centroid[3 * i + a] = 0.5f * lo + 0.5f * hi;
-            }
+            centroid[3 * i] = 0.5f * box[6 * i] + 0.5f * box[6 * i + 3];
+            centroid[3 * i + 1] = 0.5f * box[6 * i + 1] + 0.5f * box[6 * i + 4];
+            centroid[3 * i + 2] = 0.5f * box[6 * i + 2] + 0.5f * box[6 * i + 5];
             order[i] = i;
         }
+    }
+
+    /** Double boxes rounded outward to floats. */
+    private static float[] rounded(double[] box) {
+        float[] f = new float[box.length];
+        for (int i = 0; i + 5 < box.length; i += 6) {
+            for (int a = 0; a < 3; a++) {
+                f[i + a] = down(box[i + a]);
+                f[i + 3 + a] = up(box[i + 3 + a]);
+            }
+        }
+        return f;
     }
 
     void build() {

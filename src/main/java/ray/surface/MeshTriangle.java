@@ -23,7 +23,11 @@ final class MeshTriangle extends Surface {
 
     @Override
     public Aabb bounds() {
-        Aabb b = new Aabb();
+        return bounds(new Aabb());
+    }
+
+    /** The triangle's box, into {@code b} (empty or not: it only grows) and returned. */
+    Aabb bounds(Aabb b) {
         for (int k = 0; k < 3; k++) {
             b.include(mesh.coordinate(index, k, 0), mesh.coordinate(index, k, 1), mesh.coordinate(index, k, 2));
         }
