@@ -2,14 +2,14 @@ package ray.surface;
 
 import java.util.List;
 import ray.IntersectionRecord;
-import ray.accel.Aabb;
 import ray.accel.PrimitiveSet;
 import ray.accel.RayQuery;
 
 /**
  * Mesh triangles packed for the BVH: 9 floats of vertices each (the mesh's own float coordinates, which
- * the kernel widens to the same doubles {@link TriangleSet} holds for a {@link Triangle}), the mesh and
- * the triangle's number in it. Tested with {@link Triangle}'s watertight kernel; a two-sided mesh's
+ * the kernel widens to the same doubles {@link TriangleSet} holds for a {@link Triangle}), the
+ * triangle's number in its mesh, and the mesh (one reference for the set when all its triangles come
+ * from one mesh, as they usually do). Tested with {@link Triangle}'s watertight kernel; a two-sided mesh's
  * triangle missed from the front is tested from the back with the same kernel on the ray's x and y
  * axes swapped, which negates each edge function exactly: the same t and barycentrics, and no crack
  * between a mesh's front and back hits. Hits are completed by {@link Mesh#finishHit} (smooth normal,
@@ -30,31 +30,39 @@ final class MeshSet extends PrimitiveSet {
         public PrimitiveSet pack(List<Surface> surfaces) {
             return new MeshSet(surfaces, twoSided);
         }
-
-        @Override
-        public Aabb bounds(Surface s, Aabb scratch) {   // MeshTriangle.bounds() without a new box
-            return ((MeshTriangle) s).bounds(scratch.reset());
-        }
     }
 
     private final boolean twoSided;
     private final float[] v;
+    /** Each triangle's mesh; null when they all have the same one, {@link #only} (4 bytes a triangle less). */
     private final Mesh[] mesh;
+    private final Mesh only;
     private final int[] index;
 
     private MeshSet(List<Surface> list, boolean twoSided) {
         this.twoSided = twoSided;
         int n = list.size();
         v = new float[9 * n];
-        mesh = new Mesh[n];
         index = new int[n];
+        Mesh first = n == 0 ? null : ((MeshTriangle) list.get(0)).mesh;
+        boolean one = true;
         for (int i = 0; i < n; i++) {
             MeshTriangle t = (MeshTriangle) list.get(i);
-            mesh[i] = t.mesh;
+            one &= t.mesh == first;
             index[i] = t.index;
             for (int k = 0; k < 9; k++) {
                 v[9 * i + k] = (float) t.mesh.coordinate(t.index, k / 3, k % 3);   // a float widened: exact
             }
+        }
+        if (one) {
+            mesh = null;
+            only = first;
+        } else {
+            mesh = new Mesh[n];
+            for (int i = 0; i < n; i++) {
+                mesh[i] = ((MeshTriangle) list.get(i)).mesh;
+            }
+            only = null;
         }
     }
 
@@ -87,12 +95,12 @@ final class MeshSet extends PrimitiveSet {
 
     @Override
     public int size() {
-        return mesh.length;
+        return index.length;
     }
 
     @Override
     public Surface surface(int i) {
-        return mesh[i];
+        return mesh == null ? only : mesh[i];
     }
 
     /** Offset of this set's ray set-up in the query's scratch, made on the ray's first test. */
@@ -160,11 +168,11 @@ final class MeshSet extends PrimitiveSet {
             h[4 + c] = v[9 * i + c];
         }
         Triangle.fill(h, 4, h, 0, q.tMax, rec);
-        mesh[i].finishHit(index[i], h[0], h[1], h[2], h[3] != 0, rec);
+        (mesh == null ? only : mesh[i]).finishHit(index[i], h[0], h[1], h[2], h[3] != 0, rec);
     }
 
     @Override
     public long memoryBytes() {
-        return 4L * v.length + 4L * mesh.length + 4L * index.length;
+        return 4L * v.length + (mesh == null ? 0 : 4L * mesh.length) + 4L * index.length;
     }
 }

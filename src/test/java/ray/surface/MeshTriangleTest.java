@@ -47,6 +47,9 @@ class MeshTriangleTest {
         Aabb a = t.get(0).bounds(), b = t.get(1).bounds();
         assertEquals(List.of(0.0, 0.0, 0.0, 2.0, 3.0, 1.0), List.of(a.minX, a.minY, a.minZ, a.maxX, a.maxY, a.maxZ), "" + a);
         assertEquals(List.of(0.0, 0.0, 0.0, 2.0, 3.0, 1.0), List.of(b.minX, b.minY, b.minZ, b.maxX, b.maxY, b.maxZ), "" + b);
+        // the BVH build's way: into a box it reuses (whatever it held before)
+        Aabb c = t.get(1).primitiveType().bounds(t.get(1), new Aabb(-9, -9, -9, 9, 9, 9));
+        assertEquals(List.of(0.0, 0.0, 0.0, 2.0, 3.0, 1.0), List.of(c.minX, c.minY, c.minZ, c.maxX, c.maxY, c.maxZ), "" + c);
         assertTrue(t.get(0).toString().startsWith("triangle 1 of "), t.get(0).toString());
         assertTrue(t.get(1).toString().startsWith("triangle 2 of "), t.get(1).toString());
     }
@@ -69,8 +72,23 @@ class MeshTriangleTest {
         assertEquals(2, set.size());
         assertSame(m, set.surface(0));
         assertSame(m, set.surface(1));
+        // nine floats of corners and the index per triangle; the one mesh once for the set
+        assertEquals(2 * (9 * 4 + 4), set.memoryBytes());
+    }
+
+    @Test
+    void packedSetOfTwoMeshesKeepsEachTrianglesMesh() throws Exception {
+        Mesh a = mesh(1), b = mesh(1);
+        List<Surface> t = new ArrayList<>(triangles(a));
+        t.addAll(1, triangles(b));
+        ray.accel.PrimitiveSet set = t.get(0).primitiveType().pack(t);
+        assertEquals(4, set.size());
+        assertSame(a, set.surface(0));
+        assertSame(b, set.surface(1));
+        assertSame(b, set.surface(2));
+        assertSame(a, set.surface(3));
         // nine floats of corners and two ints (mesh, index) per triangle
-        assertEquals(2 * (9 * 4 + 4 + 4), set.memoryBytes());
+        assertEquals(4 * (9 * 4 + 4 + 4), set.memoryBytes());
     }
 
     @Test
