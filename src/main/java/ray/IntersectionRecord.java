@@ -22,6 +22,8 @@ public class IntersectionRecord {
      * to the shading point the fraction {@link #SHADOW_END} alone would let that surface shadow it.
      */
     public static final double TARGET_ERROR = 1024 * 0x1p-53;
+    /** (SHADOW_END / 2)^2: a target error whose square is below it times the squared length is surely under SHADOW_END. */
+    private static final double SHORT_END_SQUARED = 0.25 * SHADOW_END * SHADOW_END;
 
     public Vector3d location = new Vector3d();
     public Vector3d normal = new Vector3d();
@@ -92,14 +94,21 @@ public class IntersectionRecord {
         out.direction.z = pz - out.origin.z;
         out.tMin = 0;
         // stop short of the target by a fraction of the length and by the target's own rounding error
-        double len = Math.sqrt(out.direction.x * out.direction.x + out.direction.y * out.direction.y
-                + out.direction.z * out.direction.z);
+        double len2 = out.direction.x * out.direction.x + out.direction.y * out.direction.y
+                + out.direction.z * out.direction.z;
         // Math.max by comparisons (C1 calls Math.max on every shadow ray rather than inlining it); the
         // absolute values hold no -0, and a NaN still gives a NaN tMax, as Math.max would
         double ax = Math.abs(px), ay = Math.abs(py), az = Math.abs(pz);
         double m = ax >= ay ? ax : ay;
         m = m >= az ? m : az;
-        double e = TARGET_ERROR * m / len;
+        double tm = TARGET_ERROR * m;
+        // the usual case without the root and the division: (tm / len)^2 < (SHADOW_END / 2)^2 by a margin no
+        // rounding can cross, so e < SHADOW_END below (a length^2 under 2^-900 or a NaN takes the long way)
+        if (tm * tm < SHORT_END_SQUARED * len2 && len2 > 0x1p-900) {
+            out.tMax = 1 - SHADOW_END;
+            return;
+        }
+        double e = tm / Math.sqrt(len2);
         out.tMax = 1 - (e >= SHADOW_END || e != e ? e : SHADOW_END);
     }
 

@@ -37,6 +37,11 @@ public class AreaLight extends SampledLight {
     public int samples = 4;
 
     private double perSample = 1.0 / 16;
+    /**
+     * Per sample k, the point the grid sampler picks in its cell (offsets u = v = 0.5: the centre), x y z,
+     * worked out by {@link #init()} with the same arithmetic as {@link #sample}, which reads it instead.
+     */
+    private double[] centres = new double[0];
 
     @Override
     public void init() {
@@ -49,6 +54,15 @@ public class AreaLight extends SampledLight {
                     + samples);
         }
         perSample = 1.0 / ((double) samples * samples);
+        int n = samples;
+        double[] c = new double[3 * n * n];
+        for (int k = 0; k < n * n; k++) {
+            double s = ((k % n) + 0.5) / n - 0.5, t = ((k / n) + 0.5) / n - 0.5;
+            c[3 * k] = position.x + s * edge1.x + t * edge2.x;
+            c[3 * k + 1] = position.y + s * edge1.y + t * edge2.y;
+            c[3 * k + 2] = position.z + s * edge1.z + t * edge2.z;
+        }
+        centres = c;
     }
 
     @Override
@@ -64,10 +78,18 @@ public class AreaLight extends SampledLight {
         // this pixel sample (the grid sampler gives the cell's centre, jittered and sobol a point in it)
         PixelSample ps = out.pixel;
         ps.next2D();
-        double s = ((index % n) + ps.u) / n - 0.5, t = ((index / n) + ps.v) / n - 0.5;
-        double lx = position.x + s * edge1.x + t * edge2.x;
-        double ly = position.y + s * edge1.y + t * edge2.y;
-        double lz = position.z + s * edge1.z + t * edge2.z;
+        double lx, ly, lz;
+        double[] c = centres;
+        if (ps.u == 0.5 && ps.v == 0.5 && index >= 0 && index < c.length / 3) {   // the cell's centre, as init() found it
+            lx = c[3 * index];
+            ly = c[3 * index + 1];
+            lz = c[3 * index + 2];
+        } else {
+            double s = ((index % n) + ps.u) / n - 0.5, t = ((index / n) + ps.v) / n - 0.5;
+            lx = position.x + s * edge1.x + t * edge2.x;
+            ly = position.y + s * edge1.y + t * edge2.y;
+            lz = position.z + s * edge1.z + t * edge2.z;
+        }
         double dx = lx - p.x, dy = ly - p.y, dz = lz - p.z;
         double r2 = dx * dx + dy * dy + dz * dz;
         if (!(r2 > 0) || r2 == Double.POSITIVE_INFINITY) {
@@ -78,9 +100,10 @@ public class AreaLight extends SampledLight {
         out.position.set(lx, ly, lz);
         out.distance = r;
         double k = perSample / r2;
-        out.intensity.set(intensity.x * k, intensity.y * k, intensity.z * k);
+        double ix = intensity.x * k, iy = intensity.y * k, iz = intensity.z * k;
+        out.intensity.set(ix, iy, iz);
         out.shadowTested = false;
-        return PointLight.finite(out.intensity);
+        return Double.isFinite(ix) && Double.isFinite(iy) && Double.isFinite(iz);   // (C1 would call finite())
     }
 
     /** For the render plan (declared here, where {@link #sample} is): dark when I = 0. */
