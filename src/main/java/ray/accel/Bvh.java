@@ -386,9 +386,10 @@ public final class Bvh implements Accelerator {
 
     /**
      * The any-hit query with the occluder cache: the primitive that answered this thread's last query
-     * of {@code slot} is tested first, and a hit there ends the query; otherwise the traversal runs as
-     * always and remembers the primitive it stops at. The answer is the traversal's (the box tests are
-     * conservative, so whatever the cached primitive's own test hits, the traversal would reach too).
+     * of {@code slot}, then the rest of its leaf run (one set's primitives in one leaf), is tested first,
+     * and a hit there ends the query; otherwise the traversal runs as always and remembers what it stops
+     * at. The answer is the traversal's (the box tests are conservative, so whatever the cached run's own
+     * tests hit, the traversal would reach too).
      */
     @Override
     public boolean anyHit(Ray ray, TraceContext ctx, int slot) {
@@ -400,14 +401,8 @@ public final class Bvh implements Accelerator {
         boolean cache = slot >= 0 && slot < CACHE_SLOTS;
         if (cache) {
             int cs = q.occluderSet[slot];
-            if (cs >= 0) {
-                int ci = q.occluderIndex[slot];
-                if (COUNT) {
-                    q.primitiveTests++;
-                }
-                if (sets[cs].anyHit(ci, ci + 1, q)) {
-                    return true;
-                }
+            if (cs >= 0 && cachedRunHit(q, sets[cs], q.occluderIndex[slot], q.occluderFrom[slot], q.occluderTo[slot])) {
+                return true;
             }
         }
         double ox = q.ox, oy = q.oy, oz = q.oz, tMin = q.tMin, tMax = q.tMax;
@@ -484,7 +479,28 @@ public final class Bvh implements Accelerator {
         }
     }
 
-    /** Caches, for {@code slot}, the primitive of set {@code set} among {@code from..from+len-1} that the ray hits. */
+    /**
+     * The occluder cache's test: the remembered primitive {@code hit} first (the one that stopped the last
+     * ray: most often it stops this one too), then the rest of its leaf run [from, to) (a neighbouring
+     * ray is often stopped by a neighbouring primitive).
+     */
+    private static boolean cachedRunHit(RayQuery q, PrimitiveSet set, int hit, int from, int to) {
+        if (COUNT) {
+            q.primitiveTests++;
+        }
+        if (set.anyHit(hit, hit + 1, q)) {
+            return true;
+        }
+        if (COUNT) {
+            q.primitiveTests += to - from - 1;
+        }
+        return to - from > 1 && (set.anyHit(from, hit, q) || set.anyHit(hit + 1, to, q));
+    }
+
+    /**
+     * Caches, for {@code slot}, the leaf run {@code from..from+len-1} of set {@code set} that stopped the
+     * ray, and which of its primitives did.
+     */
     private void remember(RayQuery q, int slot, int set, int from, int len) {
         int hit = from;
         for (int i = from; len > 1 && i < from + len; i++) {   // (a run of one: no test to repeat)
@@ -498,6 +514,8 @@ public final class Bvh implements Accelerator {
         }
         q.occluderSet[slot] = set;
         q.occluderIndex[slot] = hit;
+        q.occluderFrom[slot] = from;
+        q.occluderTo[slot] = from + len;
     }
 
     /**

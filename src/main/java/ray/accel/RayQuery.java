@@ -37,9 +37,11 @@ public final class RayQuery {
 
     /**
      * The occluder cache: per slot of {@link Accelerator#anyHit(Ray, ray.TraceContext, int)}, the set
-     * (-1: none yet) and index of the primitive that last answered an any-hit query.
+     * (-1: none yet) and index of the primitive that last answered an any-hit query, and the range
+     * [from, to) of its leaf run.
      */
-    final int[] occluderSet = new int[Accelerator.CACHE_SLOTS], occluderIndex = new int[Accelerator.CACHE_SLOTS];
+    final int[] occluderSet = new int[Accelerator.CACHE_SLOTS], occluderIndex = new int[Accelerator.CACHE_SLOTS],
+            occluderFrom = new int[Accelerator.CACHE_SLOTS], occluderTo = new int[Accelerator.CACHE_SLOTS];
 
     /** Traversal stack of node references, and (closest hit) their entry distances. */
     final int[] stack = new int[128];

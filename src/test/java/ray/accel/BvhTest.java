@@ -275,8 +275,8 @@ class BvhTest {
             boolean any = bruteAny(surfaces, ray, scene);
             assertEquals(any, bvh.anyHit(copy(ray), ctx), where + ": anyHit");
             // the occluder cache: the same answers with a slot, whatever the slot remembers from earlier
-            // rays; asked again, a hit comes from the remembered primitive; shortened to end before its
-            // closest hit, the remembered primitive must not answer for it
+            // rays; asked again, a hit comes from the remembered leaf run; shortened to end before its
+            // closest hit, the remembered run must not answer for it
             int slot = i % 3;
             assertEquals(any, bvh.anyHit(copy(ray), ctx, slot), where + ": anyHit, cache slot " + slot);
             assertEquals(any, bvh.anyHit(copy(ray), ctx, slot), where + ": anyHit again, cache slot " + slot);
