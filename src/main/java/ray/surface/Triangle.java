@@ -148,45 +148,14 @@ public class Triangle extends Surface {
         double ax = v[off + kx] - okx, ay = v[off + ky] - oky, az = v[off + kz] - okz;
         double bx = v[off + 3 + kx] - okx, by = v[off + 3 + ky] - oky, bz = v[off + 3 + kz] - okz;
         double cx = v[off + 6 + kx] - okx, cy = v[off + 6 + ky] - oky, cz = v[off + 6 + kz] - okz;
-        // shear so the ray runs along +z
-        double pax = sx * az, pay = sy * az, pbx = sx * bz, pby = sy * bz, pcx = sx * cz, pcy = sy * cz;
-        double qax = ax - pax, qay = ay - pay, qbx = bx - pbx, qby = by - pby, qcx = cx - pcx, qcy = cy - pcy;
-        // edge functions; the front side gives all three >= 0
-        double u = qcx * qby - qcy * qbx;
-        double w0 = qax * qcy - qay * qcx;
-        double w1 = qbx * qay - qby * qax;
-        if (u < 0 || w0 < 0 || w1 < 0) {
-            return Double.NaN;
-        }
-        double det = u + w0 + w1;
-        if (!(det > 0)) {
-            return Double.NaN;      // ray in the triangle's plane, or seen from behind on an edge
-        }
-        double tScaled = sz * (u * az + w0 * bz + w1 * cz);
-        if (tScaled < tMin * det || tScaled > tMax * det) {
-            return Double.NaN;
-        }
-        // det (twice the sheared triangle's area) within its rounding error of 0: the ray lies in the
-        // triangle's plane up to rounding, and t = tScaled / det would be noise. Each sheared coordinate
-        // is off by at most 4 eps (|a| + |s a_z|); 16 eps covers each edge function's products.
-        double mAx = Math.abs(ax) + Math.abs(pax), mAy = Math.abs(ay) + Math.abs(pay);
-        double mBx = Math.abs(bx) + Math.abs(pbx), mBy = Math.abs(by) + Math.abs(pby);
-        double mCx = Math.abs(cx) + Math.abs(pcx), mCy = Math.abs(cy) + Math.abs(pcy);
-        if (det <= PARALLEL * (mCx * mBy + mCy * mBx + mAx * mCy + mAy * mCx + mBx * mAy + mBy * mAx)) {
-            return Double.NaN;
-        }
-        double inv = 1 / det;
-        bary[at] = u * inv;
-        bary[at + 1] = w0 * inv;
-        bary[at + 2] = w1 * inv;
-        return tScaled * inv;
+        return hit(ax, ay, az, bx, by, bz, cx, cy, cz, sx, sy, sz, tMin, tMax, bary, at);
     }
 
     /**
      * {@link #hit(double[], int, int, int, int, double, double, double, double, double, double, double,
      * double, double[], int)} on vertices stored as floats (a mesh's own coordinates): each is widened to
-     * the same double, and the arithmetic below is that method's, line for line, so t and the
-     * barycentrics are bit-identical.
+     * the same double and the same kernel runs, so t and the barycentrics are bit-identical to the double
+     * version's on the widened vertices.
      */
     public static double hit(float[] v, int off, int kx, int ky, int kz, double sx, double sy, double sz,
                              double okx, double oky, double okz, double tMin, double tMax, double[] bary, int at) {
@@ -194,6 +163,16 @@ public class Triangle extends Surface {
         double ax = v[off + kx] - okx, ay = v[off + ky] - oky, az = v[off + kz] - okz;
         double bx = v[off + 3 + kx] - okx, by = v[off + 3 + ky] - oky, bz = v[off + 3 + kz] - okz;
         double cx = v[off + 6 + kx] - okx, cy = v[off + 6 + ky] - oky, cz = v[off + 6 + kz] - okz;
+        return hit(ax, ay, az, bx, by, bz, cx, cy, cz, sx, sy, sz, tMin, tMax, bary, at);
+    }
+
+    /**
+     * The kernel of both {@code hit}s above: the triangle's corners a, b, c already relative to the ray's
+     * origin and in its axis order (kx, ky, kz). Named {@code hit} so the launcher's C1 inlines it
+     * ({@code CompileCommand=inline,ray.*::hit}); one kernel whatever the vertices are stored as.
+     */
+    private static double hit(double ax, double ay, double az, double bx, double by, double bz, double cx, double cy,
+                              double cz, double sx, double sy, double sz, double tMin, double tMax, double[] bary, int at) {
         // shear so the ray runs along +z
         double pax = sx * az, pay = sy * az, pbx = sx * bz, pby = sy * bz, pcx = sx * cz, pcy = sy * cz;
         double qax = ax - pax, qay = ay - pay, qbx = bx - pbx, qby = by - pby, qcx = cx - pcx, qcy = cy - pcy;
