@@ -97,6 +97,12 @@ public final class ObjFile {
                     + "; expected an OBJ file)");
         }
         ray.io.InputFiles.read(path);
+        ObjFile plain = readPlain(path);
+        return plain != null ? plain : readByLibrary(path, shown);
+    }
+
+    /** Reads {@code path} line by line through the library, every line checked: what any file gets wrong is said here. */
+    static ObjFile readByLibrary(Path path, String shown) throws SceneFormatException {
         LineReader reader = null;
         try (InputStream in = Files.newInputStream(path)) {
             reader = new LineReader(in);
@@ -118,6 +124,35 @@ public final class ObjFile {
             }
             throw new SceneFormatException(shown, line, "cannot read " + Values.quote(reader.text.strip()) + " ("
                     + expected(reader.text) + ")");
+        }
+    }
+
+    /**
+     * The file read without the library, when every line is one the library and the checks would take
+     * as it reads them here: null at the first line that is not (or any mistake, or a file that cannot
+     * be read), and {@link #read} reads the file again through the library, which says what is wrong
+     * as it always has. The lines read here: blank lines; lines whose first word is not a statement
+     * read (comments, groups, materials, ...); and lowercase {@code v}, {@code vn}, {@code vt} and
+     * {@code f} statements of printable ASCII without a comment or a continuation, whose numbers are
+     * plain decimals ({@link Tokens#decimalFloat}, {@code Float.parseFloat}'s value) and whose faces
+     * write every corner alike as {@code v}, {@code v/vt}, {@code v//vn} or {@code v/vt/vn} with
+     * non-zero indices. Their values and checks are the library's and the {@link Builder}'s: the same
+     * numbers, the same fan. No String, tokenizer or tuple per line.
+     */
+    static ObjFile readPlain(Path path) {
+        try (InputStream in = Files.newInputStream(path)) {
+            LineReader reader = new LineReader(in);
+            reader.plain = true;
+            Builder b = new Builder(reader, null);
+            while (reader.readLine() != null) {
+                if (!b.plainLine()) {
+                    return null;
+                }
+            }
+            b.finish();
+            return new ObjFile(b);
+        } catch (IOException | RuntimeException e) {
+            return null;
         }
     }
 
@@ -172,6 +207,8 @@ public final class ObjFile {
          */
         boolean cornersKnown;
         int cornerCount, cornerPattern;
+        /** Read for {@link #readPlain}: an ASCII line is left in {@link #chars} only, without a String. */
+        boolean plain;
 
         LineReader(InputStream in) {
             super(Reader.nullReader(), 1);
@@ -184,7 +221,7 @@ public final class ObjFile {
             if (s != null) {
                 line++;
                 if (ascii) {    // the chars are in place already, tabs as spaces
-                    text = s;
+                    text = s;   // "" in plain mode
                     if (nul) {
                         throw new Bad(line, "binary data (byte 0x00), expected a text OBJ file");
                     }
@@ -263,12 +300,15 @@ public final class ObjFile {
             }
         }
 
-        private String line(byte[] b, int from, int to, boolean plain, boolean tabs, boolean zero) {
-            ascii = plain;
+        private String line(byte[] b, int from, int to, boolean plainBytes, boolean tabs, boolean zero) {
+            ascii = plainBytes;
             tab = tabs;
             nul = zero;
             length = to - from;
-            return new String(b, from, to - from, plain ? StandardCharsets.ISO_8859_1 : StandardCharsets.UTF_8);
+            if (plainBytes && plain) {
+                return "";     // the chars are all readPlain reads
+            }
+            return new String(b, from, to - from, plainBytes ? StandardCharsets.ISO_8859_1 : StandardCharsets.UTF_8);
         }
 
         /**
@@ -445,31 +485,41 @@ public final class ObjFile {
 
         @Override
         public void addVertex(FloatTuple v) {
-            if (v.getDimensions() < 3) {      // a fourth number (w, a weight for curves) is allowed and ignored
-                throw coordinates(v, "v");
+            int d = v.getDimensions();     // 1 to 4: a tuple has no y or z to read below 3
+            vertex(d, v.getX(), d > 1 ? v.getY() : 0, d > 2 ? v.getZ() : 0);
+        }
+
+        /** A {@code v} statement of {@code d} numbers, the first three x, y, z. */
+        private void vertex(int d, float x, float y, float z) {
+            if (d < 3) {      // a fourth number (w, a weight for curves) is allowed and ignored
+                throw coordinates(d, "v");
             }
-            pos = append(pos, vertices++, v, "v");
+            pos = append(pos, vertices++, x, y, z, "v");
         }
 
         @Override
         public void addNormal(FloatTuple n) {
-            if (n.getDimensions() != 3) {
-                throw coordinates(n, "vn");
-            }
-            if (n.getX() == 0 && n.getY() == 0 && n.getZ() == 0) {
-                throw bad("has length 0 (expected 'vn x y z', a direction)");
-            }
-            nrm = append(nrm, normalCount++, n, "vn");
+            int d = n.getDimensions();
+            normal(d, n.getX(), d > 1 ? n.getY() : 0, d > 2 ? n.getZ() : 0);
         }
 
-        private Bad coordinates(FloatTuple t, String key) {
-            int d = t.getDimensions();
+        /** A {@code vn} statement of {@code d} numbers, the first three x, y, z. */
+        private void normal(int d, float x, float y, float z) {
+            if (d != 3) {
+                throw coordinates(d, "vn");
+            }
+            if (x == 0 && y == 0 && z == 0) {
+                throw bad("has length 0 (expected 'vn x y z', a direction)");
+            }
+            nrm = append(nrm, normalCount++, x, y, z, "vn");
+        }
+
+        private Bad coordinates(int d, String key) {
             return bad("has " + d + " coordinate" + (d == 1 ? "" : "s") + " (expected '" + key + " x y z')");
         }
 
         /** Checks x, y, z are finite and stores them as entry {@code i} of {@code a}, grown as needed. */
-        private float[] append(float[] a, int i, FloatTuple t, String key) {
-            float x = t.getX(), y = t.getY(), z = t.getZ();
+        private float[] append(float[] a, int i, float x, float y, float z, String key) {
             if (!Float.isFinite(x) || !Float.isFinite(y) || !Float.isFinite(z)) {
                 throw bad("has a coordinate that is not a finite float (expected '" + key + " x y z', each within +-3.4e38)");
             }
@@ -488,27 +538,46 @@ public final class ObjFile {
         @Override
         public void addFace(ObjFace f) {
             int n = f.getNumVertices();
+            boolean hasT = f.containsTexCoordIndices(), hasN = f.containsNormalIndices();
+            int[] v = new int[n], vt = hasT ? new int[n] : null, vn = hasN ? new int[n] : null;
+            for (int i = 0; i < n; i++) {
+                v[i] = f.getVertexIndex(i);
+                if (hasT) {
+                    vt[i] = f.getTexCoordIndex(i);
+                }
+                if (hasN) {
+                    vn[i] = f.getNormalIndex(i);
+                }
+            }
+            face(n, v, vt, vn);
+        }
+
+        /**
+         * A face of {@code n} corners: their vertex indices, texture coordinate and normal indices (null
+         * when the face has none), all 0-based as the library makes them.
+         */
+        private void face(int n, int[] fv, int[] ft, int[] fn) {
             if (n < 3) {
                 throw bad("has " + n + " corner" + (n == 1 ? "" : "s") + " (expected a face of at least three: 'f v1 v2 v3 ...')");
             }
-            checkCorners(n, f.containsNormalIndices(), f.containsTexCoordIndices());
+            checkCorners(n, fn != null, ft != null);
             int max = -1;
             for (int i = 0; i < n; i++) {
-                int v = f.getVertexIndex(i);
+                int v = fv[i];
                 if (v < 0) {
                     throw bad("refers to a vertex before the first (expected indices 1 to " + vertices
                             + ", or -1 to -" + vertices + " counting back from this line)");
                 }
                 max = Math.max(max, v);
-                if (f.containsNormalIndices()) {
-                    int vn = f.getNormalIndex(i);
+                if (fn != null) {
+                    int vn = fn[i];
                     if (vn < 0 || vn >= normalCount) {
                         throw bad("refers to normal " + (vn + 1) + ", but " + normalCount + " normal"
                                 + (normalCount == 1 ? " is" : "s are") + " given above it (expected 'vn' lines before the face)");
                     }
                 }
-                if (f.containsTexCoordIndices()) {
-                    int vt = f.getTexCoordIndex(i);
+                if (ft != null) {
+                    int vt = ft[i];
                     if (vt < 0 || vt >= texCoords) {
                         throw bad("refers to texture coordinate " + (vt + 1) + ", but " + texCoords + (texCoords == 1 ? " is" : " are")
                                 + " given above it (expected 'vt' lines before the face)");
@@ -523,7 +592,8 @@ public final class ObjFile {
                 forward[2 * forwardCount++ + 1] = max;
             }
             faces++;
-            anyNormals |= f.containsNormalIndices();
+            boolean hasN = fn != null;
+            anyNormals |= hasN;
             // fan: (0, k, k + 1)
             for (int k = 1; k + 1 < n; k++) {
                 if (3 * triCount + 3 > tri.length) {
@@ -531,14 +601,180 @@ public final class ObjFile {
                     triN = Arrays.copyOf(triN, 2 * triN.length);
                 }
                 int o = 3 * triCount++;
-                tri[o] = f.getVertexIndex(0);
-                tri[o + 1] = f.getVertexIndex(k);
-                tri[o + 2] = f.getVertexIndex(k + 1);
-                boolean hasN = f.containsNormalIndices();
-                triN[o] = hasN ? f.getNormalIndex(0) : -1;
-                triN[o + 1] = hasN ? f.getNormalIndex(k) : -1;
-                triN[o + 2] = hasN ? f.getNormalIndex(k + 1) : -1;
+                tri[o] = fv[0];
+                tri[o + 1] = fv[k];
+                tri[o + 2] = fv[k + 1];
+                triN[o] = hasN ? fn[0] : -1;
+                triN[o + 1] = hasN ? fn[k] : -1;
+                triN[o + 2] = hasN ? fn[k + 1] : -1;
             }
+        }
+
+        /** The current face's corners for {@link #plainLine}, 0-based; grown as needed. */
+        private int[] plainV = new int[8], plainT = new int[8], plainN = new int[8];
+        /** The index {@link #index} read last. */
+        private int number;
+
+        /**
+         * Takes the reader's current line as the library and this builder would (see {@link ObjFile#readPlain}),
+         * or returns false when the line is not one of those read here. A mistake throws as the library's
+         * reading would; readPlain then leaves the file to the library.
+         */
+        boolean plainLine() {
+            char[] t = reader.chars;
+            int from = 0, to = reader.length;
+            while (from < to && t[from] <= ' ') {     // String.trim, as the library trims each line
+                from++;
+            }
+            while (to > from && t[to - 1] <= ' ') {
+                to--;
+            }
+            if (from == to) {
+                return true;        // a blank line
+            }
+            if (t[to - 1] == '\\') {
+                return false;       // continued on the next line
+            }
+            int key = from;
+            while (key < to && t[key] != ' ') {
+                if (t[key] < ' ') {
+                    return false;       // a form feed or another control character: tokenized otherwise
+                }
+                key++;
+            }
+            int k = key - from;
+            char c0 = t[from], c1 = k > 1 ? t[from + 1] : 0;
+            int statement = k == 1 && c0 == 'v' ? 0 : k == 2 && c0 == 'v' && c1 == 'n' ? 1 : k == 2 && c0 == 'v' && c1 == 't' ? 2
+                    : k == 1 && c0 == 'f' ? 3 : -1;
+            if (statement < 0) {
+                // the library lowercases the keyword: V, VN, Vt, F are statements too (read by the library);
+                // no other character lowercases to these letters. Any other keyword it ignores.
+                char l0 = (char) (c0 | 0x20), l1 = (char) (c1 | 0x20);
+                return !(k == 1 && (l0 == 'v' || l0 == 'f') || k == 2 && l0 == 'v' && (l1 == 'n' || l1 == 't'));
+            }
+            for (int i = key; i < to; i++) {
+                char c = t[i];
+                if (c < ' ' || c > '~' || c == '#') {
+                    return false;       // a comment the library would read as a word, or more than printable ASCII
+                }
+            }
+            if (statement == 3) {
+                return plainFace(t, key, to);
+            }
+            // the words: decimals all (exact() checked them), the first three read as the library reads them
+            float x = 0, y = 0, z = 0;
+            int words = 0;
+            for (int i = key; i < to; ) {
+                if (t[i] == ' ') {
+                    i++;
+                    continue;
+                }
+                int j = i;
+                while (j < to && t[j] != ' ') {
+                    j++;
+                }
+                if (words < 3) {
+                    float f = Tokens.decimalFloat(t, i, j);
+                    if (words == 0) {
+                        x = f;
+                    } else if (words == 1) {
+                        y = f;
+                    } else {
+                        z = f;
+                    }
+                }
+                words++;
+                i = j;
+            }
+            if (words == 0) {
+                return false;       // the library's tokenizer runs out: its own failure
+            }
+            if (statement == 0) {
+                vertex(Math.min(words, 4), x, y, z);
+            } else if (statement == 1) {
+                normal(Math.min(words, 4), x, y, z);
+            } else {
+                texCoords++;
+            }
+            return true;
+        }
+
+        /**
+         * A face whose corners are all written alike as {@code v}, {@code v/vt}, {@code v//vn} or {@code v/vt/vn}
+         * with non-zero indices, each followed by a space or the end: read as the library's face parser
+         * reads it (indices made 0-based, negative ones counted back from the statements read so far);
+         * false for any other face.
+         */
+        private boolean plainFace(char[] t, int i, int to) {
+            int n = 0, shape = -1;
+            while (i < to) {
+                if (t[i] == ' ') {
+                    i++;
+                    continue;
+                }
+                if (n == plainV.length) {
+                    plainV = Arrays.copyOf(plainV, 2 * n);
+                    plainT = Arrays.copyOf(plainT, 2 * n);
+                    plainN = Arrays.copyOf(plainN, 2 * n);
+                }
+                i = index(t, i, to);
+                if (i < 0) {
+                    return false;
+                }
+                plainV[n] = number < 0 ? vertices + number : number - 1;
+                int own = 0;
+                if (i < to && t[i] == '/') {
+                    i++;
+                    if (i < to && t[i] == '/') {
+                        i = index(t, i + 1, to);
+                        own = 2;
+                    } else {
+                        i = index(t, i, to);
+                        if (i < 0) {
+                            return false;
+                        }
+                        plainT[n] = number < 0 ? texCoords + number : number - 1;
+                        own = 1;
+                        if (i < to && t[i] == '/') {
+                            i = index(t, i + 1, to);
+                            own = 3;
+                        }
+                    }
+                    if (i < 0) {
+                        return false;
+                    }
+                    if (own >= 2) {
+                        plainN[n] = number < 0 ? normalCount + number : number - 1;
+                    }
+                }
+                if (i < to && t[i] != ' ' || shape >= 0 && own != shape) {
+                    return false;
+                }
+                shape = own;
+                n++;
+            }
+            face(n, plainV, (shape & 1) != 0 ? plainT : null, (shape & 2) != 0 ? plainN : null);
+            return true;
+        }
+
+        /**
+         * Reads a non-zero index ({@code -}? digits, within an int) at {@code i} into {@link #number}; returns
+         * the index after it, or -1 when there is none.
+         */
+        private int index(char[] t, int i, int to) {
+            boolean neg = i < to && t[i] == '-';
+            int j = neg ? i + 1 : i;
+            long v = 0;
+            int start = j;
+            while (j < to && t[j] >= '0' && t[j] <= '9' && j - start < 11) {
+                v = 10 * v + (t[j] - '0');
+                j++;
+            }
+            if (j == start || v == 0 || v > Integer.MAX_VALUE || j < to && t[j] >= '0' && t[j] <= '9') {
+                return -1;
+            }
+            number = neg ? (int) -v : (int) v;
+            return j;
         }
 
         /**

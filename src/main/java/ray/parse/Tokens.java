@@ -23,16 +23,31 @@ final class Tokens {
      * else, once its shape is checked, goes to {@code parseDouble}.
      */
     static double decimal(char[] s, int from, int to) {
-        return read(s, from, to, true);
+        return read(s, from, to, DOUBLE);
+    }
+
+    /**
+     * The decimal chars [from, to) of {@code s} (as {@link #isDecimal} accepts them) as a float: exactly
+     * {@code Float.parseFloat}'s value, bit for bit. At most 7 significant digits (below 2^24) and a
+     * decimal exponent within ±10 take Clinger's fast path in float arithmetic (both are exact floats:
+     * one IEEE float multiply or divide rounds once, correctly); anything else goes to {@code parseFloat}.
+     * NaN when they are not a decimal.
+     */
+    static float decimalFloat(char[] s, int from, int to) {
+        return (float) read(s, from, to, FLOAT);     // a float's value, exact as a double
     }
 
     /** Whether chars [from, to) of {@code s} are one of the format's decimals (the shape alone: no value is worked out). */
     static boolean isDecimal(char[] s, int from, int to) {
-        return !Double.isNaN(read(s, from, to, false));
+        return !Double.isNaN(read(s, from, to, SHAPE));
     }
 
-    /** The one reader of both: NaN when not a decimal; else the value, or 0 when {@code value} is false. */
-    private static double read(char[] s, int from, int to, boolean value) {
+    private static final int SHAPE = 0, DOUBLE = 1, FLOAT = 2;
+
+    private static final float[] POW10F = {1e0f, 1e1f, 1e2f, 1e3f, 1e4f, 1e5f, 1e6f, 1e7f, 1e8f, 1e9f, 1e10f};
+
+    /** The one reader of all three: NaN when not a decimal; else the value as {@code value} asks, or 0 for the shape alone. */
+    private static double read(char[] s, int from, int to, int value) {
         int i = from;
         boolean neg = false;
         if (i < to && (s[i] == '+' || s[i] == '-')) {
@@ -90,8 +105,20 @@ final class Tokens {
         if (i != to) {
             return Double.NaN;
         }
-        if (!value) {
+        if (value == SHAPE) {
             return 0;
+        }
+        if (value == FLOAT) {
+            if (slow || significant > 7 || exp < -10 || exp > 10) {
+                return m == 0 && !slow ? (neg ? -0.0 : 0.0) : Float.parseFloat(new String(s, from, to - from));
+            }
+            float f = m;    // exact: m < 10^7 < 2^24
+            if (exp < 0) {
+                f /= POW10F[-exp];
+            } else if (exp > 0) {
+                f *= POW10F[exp];
+            }
+            return neg ? -f : f;
         }
         if (slow || exp < -22 || exp > 22) {
             return m == 0 && !slow ? (neg ? -0.0 : 0.0) : Double.parseDouble(new String(s, from, to - from));

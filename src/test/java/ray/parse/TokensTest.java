@@ -126,4 +126,41 @@ class TokensTest {
         }
         assertEquals(true, read > 100, "some random vectors are valid: " + read);
     }
+    /**
+     * The OBJ reader's floats: {@code Tokens.decimalFloat} is {@code Float.parseFloat}, bit for bit, on its
+     * fast path (at most 7 significant digits, exponent within ±10) and off it (rounding near halfway,
+     * subnormals, overflow, long mantissas).
+     */
+    @Test
+    void decimalFloatIsBitIdenticalToParseFloat() {
+        Random r = new Random(2026);
+        String[] fixed = {"0", "-0", "-0.000000", "+0.0", "1", "-1.5", ".5", "5.", "0.1", "0.3", "1.007818", "-0.006332",
+            "16777216", "16777217", "9999999", "99999999", "0.0000001", "1e10", "1e11", "1e-10", "1e-11", "1e38", "3.4028235e38",
+            "3.4028236e38", "1e39", "1.4e-45", "7e-46", "1e-50", "0e99", "-0e-99", "1.00000005960464477539", "33554431", "0.1e1"};
+        for (String s : fixed) {
+            assertFloatIdentical(s);
+        }
+        for (int k = 0; k < 300_000; k++) {
+            StringBuilder b = new StringBuilder();
+            if (r.nextInt(3) == 0) {
+                b.append(r.nextBoolean() ? '-' : '+');
+            }
+            int digits = 1 + r.nextInt(r.nextBoolean() ? 8 : 20), point = r.nextInt(digits + 2) - 1;
+            for (int i = 0; i < digits; i++) {
+                if (i == point) {
+                    b.append('.');
+                }
+                b.append((char) ('0' + (i == 0 && r.nextBoolean() ? 0 : r.nextInt(10))));
+            }
+            if (r.nextInt(4) == 0) {
+                b.append('e').append(r.nextInt(100) - 50);
+            }
+            assertFloatIdentical(b.toString());
+        }
+    }
+
+    private static void assertFloatIdentical(String s) {
+        char[] c = inLine(s);
+        assertEquals(Float.floatToRawIntBits(Float.parseFloat(s)), Float.floatToRawIntBits(Tokens.decimalFloat(c, 2, 2 + s.length())), s);
+    }
 }
