@@ -2,6 +2,7 @@ package ray.surface;
 
 import java.util.List;
 import ray.IntersectionRecord;
+import ray.accel.Aabb;
 import ray.accel.PrimitiveSet;
 import ray.accel.RayQuery;
 
@@ -29,6 +30,11 @@ final class MeshSet extends PrimitiveSet {
         @Override
         public PrimitiveSet pack(List<Surface> surfaces) {
             return new MeshSet(surfaces, twoSided);
+        }
+
+        @Override
+        public Aabb bounds(Surface s, Aabb scratch) {   // MeshTriangle.bounds() without a new box
+            return ((MeshTriangle) s).bounds(scratch.reset());
         }
     }
 
