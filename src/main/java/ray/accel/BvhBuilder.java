@@ -92,16 +92,16 @@ final class BvhBuilder {
             return;
         }
         float[] b = new float[6], c = new float[6];
-        bounds(0, count, b, c);
+        bounds(0, count, b, 0, c, 0);
         System.arraycopy(b, 0, rootBox, 0, 6);
-        Nodes out = new Nodes(Math.max(16, count / 2));
-        root = build(0, count, b, c, 0, out, new Scratch());
-        nodeBox = Arrays.copyOf(out.box, 12 * out.count);
-        nodeChild = Arrays.copyOf(out.child, 2 * out.count);
-        nodeCount = out.count;
+        Part tree = part(0, count, c, 0, 0, new Scratch());
+        nodeCount = tree.size;
+        nodeBox = new float[12 * nodeCount];
+        nodeChild = new int[2 * nodeCount];
+        root = tree.write(nodeBox, nodeChild, 0);
     }
 
-    /** Growable inner-node storage of one (sub)tree. */
+    /** Growable inner-node storage of one subtree, its nodes numbered from 0. */
     static final class Nodes {
         float[] box;
         int[] child;
@@ -119,25 +119,56 @@ final class BvhBuilder {
             }
             return count++;
         }
+    }
 
-        /** Appends {@code o}'s nodes, renumbering its inner references; returns the offset. */
-        int append(Nodes o) {
-            int off = count;
-            while (count + o.count > child.length / 2) {
-                box = Arrays.copyOf(box, box.length * 2);
-                child = Arrays.copyOf(child, child.length * 2);
+    /**
+     * A built subtree: the nodes of one thread's subtree ({@link Nodes} and its root reference), or, above
+     * the subtrees built in parallel, a node (its children's boxes) and its two parts. Each node is copied
+     * once, when the whole tree is laid out ({@link #write}), not once per level of the parallel build.
+     */
+    static final class Part {
+        final Nodes nodes;
+        final int ref;
+        final float[] box;
+        final Part left, right;
+        /** Inner nodes in this part. */
+        final int size;
+
+        Part(Nodes nodes, int ref) {
+            this.nodes = nodes;
+            this.ref = ref;
+            box = null;
+            left = right = null;
+            size = nodes.count;
+        }
+
+        Part(float[] kids, Part left, Part right) {
+            nodes = null;
+            ref = 0;
+            box = Arrays.copyOf(kids, 12);    // the children's boxes, as a node holds them
+            this.left = left;
+            this.right = right;
+            size = 1 + left.size + right.size;
+        }
+
+        /** Writes this part's nodes in depth-first order from node {@code at}; returns its root reference. */
+        int write(float[] outBox, int[] outChild, int at) {
+            if (nodes != null) {
+                System.arraycopy(nodes.box, 0, outBox, 12 * at, 12 * size);
+                for (int i = 0; i < 2 * size; i++) {
+                    int r = nodes.child[i];
+                    outChild[2 * at + i] = r >= 0 ? r + at : r;
+                }
+                return ref >= 0 ? ref + at : ref;
             }
-            System.arraycopy(o.box, 0, box, 12 * off, 12 * o.count);
-            for (int i = 0; i < 2 * o.count; i++) {
-                int r = o.child[i];
-                child[2 * off + i] = r >= 0 ? r + off : r;
-            }
-            count += o.count;
-            return off;
+            System.arraycopy(box, 0, outBox, 12 * at, 12);
+            outChild[2 * at] = left.write(outBox, outChild, at + 1);
+            outChild[2 * at + 1] = right.write(outBox, outChild, at + 1 + left.size);
+            return at;
         }
     }
 
-    /** Per-thread scratch for binning. */
+    /** Per-thread scratch for binning, and each depth's split: the children's boxes and centroid bounds. */
     static final class Scratch {
         final int[] binCount = new int[3 * BINS];
         final float[] binBox = new float[3 * BINS * 6];
@@ -147,83 +178,115 @@ final class BvhBuilder {
         // result of the last split search
         int axis, bin, bins;
         float cost;
+        /** Per depth: left box, right box, left centroid bounds, right centroid bounds ({@link #LB} ...). */
+        float[][] kids = new float[64][];
+
+        /** The split arrays of {@code depth}: its children's own, kept while they are built (depth-first). */
+        float[] kids(int depth) {
+            if (depth >= kids.length) {
+                kids = Arrays.copyOf(kids, 2 * depth);
+            }
+            float[] k = kids[depth];
+            if (k == null) {
+                k = kids[depth] = new float[24];
+            }
+            return k;
+        }
     }
 
-    /** A subtree built on the fork/join pool, into its own node storage. */
-    static final class Subtree extends RecursiveTask<Nodes> {
+    /** Offsets in a {@link Scratch#kids} array. */
+    static final int LB = 0, RB = 6, LC = 12, RC = 18;
+
+    /** A subtree built on the fork/join pool, with its own scratch. */
+    static final class Subtree extends RecursiveTask<Part> {
         private static final long serialVersionUID = 1L;
         final transient BvhBuilder b;
-        final int start, end, depth;
-        final float[] box, cent;
-        int ref;
+        final int start, end, depth, co;
+        final float[] cent;
 
-        Subtree(BvhBuilder b, int start, int end, float[] box, float[] cent, int depth) {
+        Subtree(BvhBuilder b, int start, int end, float[] cent, int co, int depth) {
             this.b = b;
             this.start = start;
             this.end = end;
-            this.box = box;
             this.cent = cent;
+            this.co = co;
             this.depth = depth;
         }
 
         @Override
-        protected Nodes compute() {
-            Nodes out = new Nodes(Math.max(16, (end - start) / 2));
-            ref = b.build(start, end, box, cent, depth, out, new Scratch());
-            return out;
+        protected Part compute() {
+            return b.part(start, end, cent, co, depth, new Scratch());
         }
     }
 
     /**
-     * Builds the subtree over slots [start, end) with box {@code box} and centroid bounds {@code cent};
-     * returns its reference (a node index in {@code out}, or a leaf).
+     * Builds the subtree over slots [start, end) with centroid bounds {@code cent[co, co + 6)}: while it
+     * is large, its node here and its two halves on two threads; below that, one thread's {@link Nodes}.
      */
-    int build(int start, int end, float[] box, float[] cent, int depth, Nodes out, Scratch s) {
+    Part part(int start, int end, float[] cent, int co, int depth, Scratch s) {
+        int n = end - start;
+        if (n >= PARALLEL_MIN && depth < 8 && Runtime.getRuntime().availableProcessors() > 1) {
+            float[] k = s.kids(depth);
+            int mid = split(start, end, cent, co, depth, s, k);
+            if (mid >= 0) {
+                Subtree lt = new Subtree(this, start, mid, k, LC, depth + 1);
+                lt.fork();
+                Part right = part(mid, end, k, RC, depth + 1, s);
+                Part left = lt.join();
+                return new Part(k, left, right);
+            }
+        }
+        Nodes out = new Nodes(Math.max(16, n / 2));
+        int ref = build(start, end, cent, co, depth, out, s);
+        return new Part(out, ref);
+    }
+
+    /**
+     * Builds the subtree over slots [start, end) with centroid bounds {@code cent[co, co + 6)} into
+     * {@code out}; returns its reference (a node index in {@code out}, or a leaf).
+     */
+    int build(int start, int end, float[] cent, int co, int depth, Nodes out, Scratch s) {
+        float[] k = s.kids(depth);
+        int mid = split(start, end, cent, co, depth, s, k);
+        if (mid < 0) {
+            return mid;     // a leaf
+        }
+        int node = out.add();
+        int left = build(start, mid, k, LC, depth + 1, out, s);
+        int right = build(mid, end, k, RC, depth + 1, out, s);
+        out.child[2 * node] = left;
+        out.child[2 * node + 1] = right;
+        System.arraycopy(k, LB, out.box, 12 * node, 12);   // left box, then right box
+        return node;
+    }
+
+    /**
+     * Decides slots [start, end): a leaf reference (negative) when they stay one leaf; else partitions
+     * them and returns the first slot of the right child, the children's boxes and centroid bounds in
+     * {@code k} ({@link #LB}, {@link #RB}, {@link #LC}, {@link #RC}).
+     */
+    private int split(int start, int end, float[] cent, int co, int depth, Scratch s, float[] k) {
         int n = end - start;
         if (n == 1) {
             return leaf(start, n);
         }
         int mid = -1;
-        float[] lb, rb, lc, rc;   // the children's boxes and centroid bounds, made once a split is certain
-        if (depth < SAH_DEPTH && findSplit(start, end, cent, s)) {
+        if (depth < SAH_DEPTH && findSplit(start, end, cent, co, s)) {
             float leafCost = n;
             if (n <= MAX_LEAF && leafCost <= s.cost) {
                 return leaf(start, n);
             }
-            lb = new float[6]; rb = new float[6]; lc = new float[6]; rc = new float[6];
-            mid = partition(start, end, cent, s, lb, rb, lc, rc);
+            mid = partition(start, end, cent, co, s, k);
         } else if (n <= MAX_LEAF && depth < SAH_DEPTH) {
             return leaf(start, n);   // all centroids coincide: nothing to gain from splitting
-        } else {
-            lb = new float[6]; rb = new float[6]; lc = new float[6]; rc = new float[6];
         }
         if (mid < 0) {
             // no SAH split (coincident centroids or too deep): halve by count, balanced
             mid = start + n / 2;
-            bounds(start, mid, lb, lc);
-            bounds(mid, end, rb, rc);
+            bounds(start, mid, k, LB, k, LC);
+            bounds(mid, end, k, RB, k, RC);
         }
-        int node = out.add();
-        int left, right;
-        if (n >= PARALLEL_MIN && depth < 8 && Runtime.getRuntime().availableProcessors() > 1) {
-            Subtree lt = new Subtree(this, start, mid, lb, lc, depth + 1);
-            lt.fork();
-            Nodes rn = new Nodes(Math.max(16, (end - mid) / 2));
-            int rref = build(mid, end, rb, rc, depth + 1, rn, s);
-            Nodes ln = lt.join();
-            int loff = out.append(ln);
-            left = lt.ref >= 0 ? lt.ref + loff : lt.ref;
-            int roff = out.append(rn);
-            right = rref >= 0 ? rref + roff : rref;
-        } else {
-            left = build(start, mid, lb, lc, depth + 1, out, s);
-            right = build(mid, end, rb, rc, depth + 1, out, s);
-        }
-        out.child[2 * node] = left;
-        out.child[2 * node + 1] = right;
-        System.arraycopy(lb, 0, out.box, 12 * node, 6);
-        System.arraycopy(rb, 0, out.box, 12 * node + 6, 6);
-        return node;
+        return mid;
     }
 
     static int leaf(int start, int n) {
@@ -237,7 +300,7 @@ final class BvhBuilder {
     }
 
     /** Finds the cheapest binned SAH split over all axes into {@code s}; false when there is none. */
-    private boolean findSplit(int start, int end, float[] cent, Scratch s) {
+    private boolean findSplit(int start, int end, float[] cent, int co, Scratch s) {
         int[] cnt = s.binCount;
         float[] bb = s.binBox;
         // small nodes get fewer bins: the fixed cost of a search (clearing and sweeping the bins) would
@@ -253,8 +316,8 @@ final class BvhBuilder {
             bb[o] = bb[o + 1] = bb[o + 2] = Float.POSITIVE_INFINITY;
             bb[o + 3] = bb[o + 4] = bb[o + 5] = Float.NEGATIVE_INFINITY;
         }
-        float lx = cent[0], ly = cent[1], lz = cent[2];
-        float ex = cent[3] - lx, ey = cent[4] - ly, ez = cent[5] - lz;
+        float lx = cent[co], ly = cent[co + 1], lz = cent[co + 2];
+        float ex = cent[co + 3] - lx, ey = cent[co + 4] - ly, ez = cent[co + 5] - lz;
         float sx = ex > 0 ? nb * 0.99999f / ex : 0, sy = ey > 0 ? nb * 0.99999f / ey : 0, sz = ez > 0 ? nb * 0.99999f / ez : 0;
         if (sx == 0 && sy == 0 && sz == 0) {
             return false;
@@ -345,10 +408,10 @@ final class BvhBuilder {
         }
         // the parent's box is the union of any axis's bins
         float[] acc = s.acc;
-        empty(acc);
+        empty(acc, 0);
         int base = bestAxis * BINS;
         for (int i = 0; i < nb; i++) {
-            growBox(acc, bb, 6 * (base + i));
+            growBox(acc, 0, bb, 6 * (base + i));
         }
         float parentArea = area(acc);
         s.axis = bestAxis;
@@ -361,16 +424,16 @@ final class BvhBuilder {
      * Partitions slots [start, end) at the split in {@code s}; fills the children's boxes (from the
      * bins) and centroid bounds (from the pass). Returns the first index of the right child.
      */
-    private int partition(int start, int end, float[] cent, Scratch s, float[] lb, float[] rb, float[] lc, float[] rc) {
+    private int partition(int start, int end, float[] cent, int co, Scratch s, float[] k) {
         int axis = s.axis, split = s.bin;
-        float lo = cent[axis], ext = cent[3 + axis] - lo;
+        float lo = cent[co + axis], ext = cent[co + 3 + axis] - lo;
         int nb = s.bins;
         float scale = nb * 0.99999f / ext;
         float[] bb = s.binBox;
-        empty(lb);
-        empty(rb);
+        empty(k, LB);
+        empty(k, RB);
         for (int i = 0; i < nb; i++) {
-            growBox(i <= split ? lb : rb, bb, 6 * (axis * BINS + i));
+            growBox(k, i <= split ? LB : RB, bb, 6 * (axis * BINS + i));
         }
         float[] pc = centroid, pb = primBox;
         int[] ord = order;
@@ -398,37 +461,37 @@ final class BvhBuilder {
                 int t = ord[i];
                 ord[i] = ord[j];
                 ord[j] = t;
-                for (int k = 0; k < 6; k++) {
-                    float f = pb[6 * i + k];
-                    pb[6 * i + k] = pb[6 * j + k];
-                    pb[6 * j + k] = f;
+                for (int q = 0; q < 6; q++) {
+                    float f = pb[6 * i + q];
+                    pb[6 * i + q] = pb[6 * j + q];
+                    pb[6 * j + q] = f;
                 }
-                for (int k = 0; k < 3; k++) {
-                    float f = pc[3 * i + k];
-                    pc[3 * i + k] = pc[3 * j + k];
-                    pc[3 * j + k] = f;
+                for (int q = 0; q < 3; q++) {
+                    float f = pc[3 * i + q];
+                    pc[3 * i + q] = pc[3 * j + q];
+                    pc[3 * j + q] = f;
                 }
                 j--;
             }
         }
-        lc[0] = lcx0; lc[1] = lcy0; lc[2] = lcz0; lc[3] = lcx1; lc[4] = lcy1; lc[5] = lcz1;
-        rc[0] = rcx0; rc[1] = rcy0; rc[2] = rcz0; rc[3] = rcx1; rc[4] = rcy1; rc[5] = rcz1;
+        k[LC] = lcx0; k[LC + 1] = lcy0; k[LC + 2] = lcz0; k[LC + 3] = lcx1; k[LC + 4] = lcy1; k[LC + 5] = lcz1;
+        k[RC] = rcx0; k[RC + 1] = rcy0; k[RC + 2] = rcz0; k[RC + 3] = rcx1; k[RC + 4] = rcy1; k[RC + 5] = rcz1;
         return i;
     }
 
-    /** Box and centroid bounds of slots [start, end). */
-    private void bounds(int start, int end, float[] box, float[] cent) {
-        empty(box);
-        empty(cent);
+    /** Box and centroid bounds of slots [start, end), into {@code box[bo, bo + 6)} and {@code cent[co, co + 6)}. */
+    private void bounds(int start, int end, float[] box, int bo, float[] cent, int co) {
+        empty(box, bo);
+        empty(cent, co);
         for (int i = start; i < end; i++) {
-            growBox(box, primBox, 6 * i);
-            growPoint(cent, centroid, 3 * i);
+            growBox(box, bo, primBox, 6 * i);
+            growPoint(cent, co, centroid, 3 * i);
         }
     }
 
-    private static void empty(float[] b) {
-        b[0] = b[1] = b[2] = Float.POSITIVE_INFINITY;
-        b[3] = b[4] = b[5] = Float.NEGATIVE_INFINITY;
+    private static void empty(float[] b, int o) {
+        b[o] = b[o + 1] = b[o + 2] = Float.POSITIVE_INFINITY;
+        b[o + 3] = b[o + 4] = b[o + 5] = Float.NEGATIVE_INFINITY;
     }
 
     private static void grow(float[] b, int o, float x0, float y0, float z0, float x1, float y1, float z1) {
@@ -440,13 +503,13 @@ final class BvhBuilder {
         if (z1 > b[o + 5]) b[o + 5] = z1;
     }
 
-    private static void growBox(float[] b, float[] src, int so) {
-        grow(b, 0, src[so], src[so + 1], src[so + 2], src[so + 3], src[so + 4], src[so + 5]);
+    private static void growBox(float[] b, int o, float[] src, int so) {
+        grow(b, o, src[so], src[so + 1], src[so + 2], src[so + 3], src[so + 4], src[so + 5]);
     }
 
-    private static void growPoint(float[] b, float[] src, int so) {
+    private static void growPoint(float[] b, int o, float[] src, int so) {
         float x = src[so], y = src[so + 1], z = src[so + 2];
-        grow(b, 0, x, y, z, x, y, z);
+        grow(b, o, x, y, z, x, y, z);
     }
 
     private static float area(float[] b) {

@@ -269,7 +269,7 @@ class BvhTreeQualityTest {
                 }
             }
             BvhBuilder.Nodes out = new BvhBuilder.Nodes(16);
-            int ref = b.build(0, n, bb, cb, BvhBuilder.SAH_DEPTH, out, new BvhBuilder.Scratch());
+            int ref = b.build(0, n, cb, 0, BvhBuilder.SAH_DEPTH, out, new BvhBuilder.Scratch());
             b.root = ref;
             b.nodeBox = out.box;
             b.nodeChild = out.child;
