@@ -90,7 +90,34 @@ public final class Failures {
 
     /** Keeps an error report on one line whatever a message or a file name holds (control characters become spaces). */
     public static String oneLine(String s) {
-        return s.replaceAll("[\\p{Cntrl}\u2028\u2029]+", " ");
+        // what s.replaceAll("[\\p{Cntrl}\u2028\u2029]+", " ") gives, without the regex: its character
+        // class is a lambda inside java.util.regex, and the first lambda a process calls spins it a class
+        // (the method-handle machinery, about 90 classes), on every render's summary line
+        int n = s.length(), i = 0;
+        while (i < n && !lineBreaking(s.charAt(i))) {
+            i++;
+        }
+        if (i == n) {
+            return s;
+        }
+        StringBuilder b = new StringBuilder(n).append(s, 0, i);
+        while (i < n) {
+            char c = s.charAt(i++);
+            if (lineBreaking(c)) {
+                b.append(' ');
+                while (i < n && lineBreaking(s.charAt(i))) {
+                    i++;
+                }
+            } else {
+                b.append(c);
+            }
+        }
+        return b.toString();
+    }
+
+    /** A character {@link #oneLine} replaces: a POSIX control character ({@code \p{Cntrl}}) or U+2028, U+2029. */
+    private static boolean lineBreaking(char c) {
+        return c < 0x20 || c == 0x7f || c == '\u2028' || c == '\u2029';
     }
 
     private static String safeString(StackTraceElement f) {

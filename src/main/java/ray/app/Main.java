@@ -139,14 +139,32 @@ public final class Main implements Callable<Integer> {
         cl.setOut(new java.io.PrintWriter(out, true));
         cl.setErr(new java.io.PrintWriter(err, true));
         cl.setExpandAtFiles(false);            // a scene may be named @x.txt; picocli would read it as an argument file
-        cl.setParameterExceptionHandler(new CommandLine.IParameterExceptionHandler() {
-            @Override
-            public int handleParseException(CommandLine.ParameterException e, String[] a) {
-                err.println(oneLine("raytracer: " + e.getMessage() + " (see raytracer --help)"));
-                return 2;
-            }
-        });
+        cl.setParameterExceptionHandler(ParameterErrors.to(err));
         return cl.execute(args);
+    }
+
+    /**
+     * picocli's report of a bad command line, in one line. A class of its own, made through a method typed
+     * with picocli's interface: a handler class written inside {@link #run} would make verifying Main load
+     * that interface, a Java 5 class the class-data-sharing archive cannot hold, from picocli's jar in
+     * every render, though the everyday command lines never reach picocli ({@link #simpleCommandLine}).
+     */
+    static final class ParameterErrors implements CommandLine.IParameterExceptionHandler {
+        private final PrintStream err;
+
+        private ParameterErrors(PrintStream err) {
+            this.err = err;
+        }
+
+        static CommandLine.IParameterExceptionHandler to(PrintStream err) {
+            return new ParameterErrors(err);
+        }
+
+        @Override
+        public int handleParseException(CommandLine.ParameterException e, String[] a) {
+            err.println(oneLine("raytracer: " + e.getMessage() + " (see raytracer --help)"));
+            return 2;
+        }
     }
 
     /**
