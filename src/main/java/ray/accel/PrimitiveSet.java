@@ -18,8 +18,11 @@ import ray.surface.Surface;
  */
 public abstract class PrimitiveSet {
 
-    /** Doubles of per-ray set-up a set may keep in {@link RayQuery#scratch}, and of {@link RayQuery#hitData}. */
-    public static final int SCRATCH = 16;
+    /**
+     * Doubles a set may keep in {@link RayQuery#scratch} (per-ray set-up, and what it keeps from ray to
+     * ray in the thread: TriangleSet its last triangles' normals), and of {@link RayQuery#hitData}.
+     */
+    public static final int SCRATCH = 52;
 
     /** Makes a set from surfaces of one type, in leaf order. One shared instance per type. */
     public interface Type {

@@ -212,18 +212,33 @@ public class Triangle extends Surface {
      * from the barycentrics, unit normal, error bound.
      */
     public static void fill(double[] v, int off, double[] bary, int at, double t, IntersectionRecord rec) {
+        fillPoint(v, off, bary, at, t, rec);
+        fillNormal(v, off, rec);
+    }
+
+    /** What {@link #fill} writes that differs from hit to hit: the point from the barycentrics, t, the side. */
+    static void fillPoint(double[] v, int off, double[] bary, int at, double t, IntersectionRecord rec) {
         double b0 = bary[at], b1 = bary[at + 1], b2 = bary[at + 2];
         double x0 = v[off], y0 = v[off + 1], z0 = v[off + 2];
         double x1 = v[off + 3], y1 = v[off + 4], z1 = v[off + 5];
         double x2 = v[off + 6], y2 = v[off + 7], z2 = v[off + 8];
         rec.location.set(b0 * x0 + b1 * x1 + b2 * x2, b0 * y0 + b1 * y1 + b2 * y2, b0 * z0 + b1 * z1 + b2 * z2);
-        double ex = x1 - x0, ey = y1 - y0, ez = z1 - z0;
-        double fx = x2 - x0, fy = y2 - y0, fz = z2 - z0;
+        rec.frontFace = true;
+        rec.t = t;
+    }
+
+    /**
+     * What {@link #fill} writes that is the triangle's own, the same for every hit on it: the unit normal
+     * and the error bound (a square root, three divisions and nine comparisons: {@link TriangleSet} keeps
+     * them from a thread's last hit).
+     */
+    static void fillNormal(double[] v, int off, IntersectionRecord rec) {
+        double x0 = v[off], y0 = v[off + 1], z0 = v[off + 2];
+        double ex = v[off + 3] - x0, ey = v[off + 4] - y0, ez = v[off + 5] - z0;
+        double fx = v[off + 6] - x0, fy = v[off + 7] - y0, fz = v[off + 8] - z0;
         double nx = ey * fz - ez * fy, ny = ez * fx - ex * fz, nz = ex * fy - ey * fx;
         double len = Math.sqrt(nx * nx + ny * ny + nz * nz);
         rec.normal.set(nx / len, ny / len, nz / len);
-        rec.frontFace = true;
-        rec.t = t;
         double m = 0;
         for (int i = 0; i < 9; i++) {
             double c = Math.abs(v[off + i]);

@@ -26,6 +26,11 @@ final class TriangleSet extends PrimitiveSet {
     };
 
     private final double[] v;
+    /**
+     * Where in this set's query scratch the normals of the last filled triangles are kept ({@link #fill}):
+     * after the ray set-up, {@value #FILLED_SLOTS} slots of 5 doubles, triangle i in slot i mod 8.
+     */
+    private static final int FILLED = Triangle.KERNEL_SIZE, FILLED_SLOTS = 8;
 
     private TriangleSet(List<Surface> list) {
         super(list);
@@ -84,9 +89,29 @@ final class TriangleSet extends PrimitiveSet {
         return false;
     }
 
+    /**
+     * {@link Triangle#fill}. The normal and error bound are the triangle's own, so the thread's last ones
+     * are kept in its query scratch (a slot per triangle index mod 8: index + 1, or 0 for none; normal;
+     * error bound) and copied when the same triangle is hit again, as neighbouring camera rays and a
+     * mirror path's bounces mostly do: the same numbers without their square root and divisions.
+     */
     @Override
     public void fill(int i, RayQuery q, IntersectionRecord rec) {
-        Triangle.fill(v, 9 * i, q.hitData, 0, q.tMax, rec);
+        int o = 9 * i;
+        Triangle.fillPoint(v, o, q.hitData, 0, q.tMax, rec);
+        double[] k = q.scratch;
+        int c = id() * SCRATCH + FILLED + 5 * (i & (FILLED_SLOTS - 1));
+        if (k[c] == i + 1) {
+            rec.normal.set(k[c + 1], k[c + 2], k[c + 3]);
+            rec.error = k[c + 4];
+        } else {
+            Triangle.fillNormal(v, o, rec);
+            k[c] = i + 1;
+            k[c + 1] = rec.normal.x;
+            k[c + 2] = rec.normal.y;
+            k[c + 3] = rec.normal.z;
+            k[c + 4] = rec.error;
+        }
         rec.surface = surfaces[i];
     }
 
