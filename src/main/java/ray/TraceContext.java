@@ -24,6 +24,8 @@ public final class TraceContext {
     /** Scratch for a material's reflectance at the hit being shaded (a texture's value), read within its light loop. */
     public final Vector3d reflectance = new Vector3d();
     public final RayStats stats = new RayStats();
+    /** Rays cast together (a block of camera rays, {@link Scene#castCameras}): empty until a render reserves it. */
+    public final RayPacket packet = new RayPacket();
     /**
      * The scene accelerator's own per-thread scratch (for the BVH its {@code RayQuery}: traversal stack,
      * per-ray set-up); made and used by the accelerator only.

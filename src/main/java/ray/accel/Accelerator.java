@@ -2,6 +2,7 @@ package ray.accel;
 
 import ray.IntersectionRecord;
 import ray.Ray;
+import ray.RayPacket;
 import ray.TraceContext;
 
 /** Answers the two ray queries a renderer needs, over all of a scene's surfaces. */
@@ -24,6 +25,24 @@ public interface Accelerator {
      */
     default boolean anyHit(Ray ray, TraceContext ctx, int cacheSlot) {
         return anyHit(ray, ctx);
+    }
+
+    /**
+     * {@link #closestHit} for each ray of the packet, into its record and hit flag: the same answers,
+     * ray for ray. An accelerator may trace rays that leave one point together.
+     */
+    default void closestHits(RayPacket p, TraceContext ctx) {
+        for (int k = 0; k < p.size; k++) {
+            p.hit[k] = closestHit(p.rays[k], p.records[k], ctx);
+        }
+    }
+
+    /**
+     * True when {@link #closestHits} of rays leaving one point costs less than their single queries
+     * (a renderer then casts its camera rays in packets); false by default.
+     */
+    default boolean packetsPay() {
+        return false;
     }
 
     /** Slots of the occluder cache {@link #anyHit(Ray, TraceContext, int)} may keep. */

@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.Map;
 import ray.IntersectionRecord;
 import ray.Ray;
+import ray.RayPacket;
 import ray.Scene;
 import ray.TraceContext;
 import ray.surface.Surface;
@@ -30,7 +31,9 @@ import ray.surface.Surface;
  * min/max) and leave the interval unchanged when a slab distance is NaN, so they stay conservative.
  * A leaf's slots are grouped by set, and each run of one set's slots is handed to that set. Where two
  * primitives are hit at exactly the same t, the one in the earlier leaf slot wins, whatever the order
- * they were tested in ({@link RayQuery#offer}).
+ * they were tested in ({@link RayQuery#offer}). Camera rays leaving the eye may be traced as a packet
+ * ({@link #closestHits}): inner nodes tested once for the whole packet, leaves ray by ray, each ray's
+ * answer its single query's.
  *
  * <p>Per-thread scratch (the traversal stack, the ray's set-up) is this class's {@link RayQuery}, kept
  * in the thread's {@link TraceContext#acceleratorScratch}.
@@ -345,19 +348,7 @@ public final class Bvh implements Accelerator {
                     continue;
                 }
             } else {
-                int leaf = ~ref, first = leaf >>> 4, end = first + (leaf & 15);
-                if (COUNT) {
-                    q.primitiveTests += leaf & 15;
-                }
-                if (one != null) {
-                    one.closestHit(first, end, first, q);
-                } else {
-                    for (int i = first; i < end; ) {
-                        int r = run[i], len = r & 15, from = index[i];
-                        ps[r >>> 4].closestHit(from, from + len, i, q);
-                        i += len;
-                    }
-                }
+                hit(~ref, q, one, run, index, ps);
             }
             // pop the nearest pending subtree that may still hold a closer hit
             do {
@@ -366,6 +357,172 @@ public final class Bvh implements Accelerator {
                 }
                 ref = stack[--sp];
             } while (stackT[sp] > q.tMax * SLAB_SLACK);
+        }
+    }
+
+    /**
+     * The closest-hit tests of a leaf ({@code first slot << 4 | count}) for query {@code q}: each run of
+     * one set's slots handed to its set, which offers its hits ({@link RayQuery#offer}). Named hit so the
+     * launcher's {@code CompileCommand=inline,ray.*::hit} inlines it under C1 into both traversals, as
+     * when its lines were written out in {@link #closestHit}; the traversal passes the tree's fields
+     * it loaded once per query ({@link #onlySet}, {@link #slotRun}, {@link #slotIndex}, {@link #sets}),
+     * which C1 would otherwise load again at every leaf.
+     */
+    private static void hit(int leaf, RayQuery q, PrimitiveSet one, int[] run, int[] index, PrimitiveSet[] ps) {
+        int first = leaf >>> 4, end = first + (leaf & 15);
+        if (COUNT) {
+            q.primitiveTests += leaf & 15;
+        }
+        if (one != null) {
+            one.closestHit(first, end, first, q);
+        } else {
+            for (int i = first; i < end; ) {
+                int r = run[i], len = r & 15, from = index[i];
+                ps[r >>> 4].closestHit(from, from + len, i, q);
+                i += len;
+            }
+        }
+    }
+
+    /** Inner nodes from which camera rays are traced in packets ({@link #packetsPay}). */
+    static final int PACKET_NODES = Integer.getInteger("ray.bvh.packetNodes", 64);
+
+    @Override
+    public boolean packetsPay() {
+        return nodeCount >= PACKET_NODES;
+    }
+
+    /**
+     * The closest hit of each ray of a packet whose rays leave one point with the same direction signs
+     * and no zero direction component (a block of camera rays), traced through the tree together: the
+     * answers are {@link #closestHit}'s, ray for ray. Any other packet is traced ray by ray.
+     *
+     * <p>An inner node's two boxes are tested once for the whole packet ({@link #slabs(float[], int,
+     * boolean, boolean, boolean, double, double, double, double, double, double, double, double, double,
+     * double, double)}: over the range of the rays' inverse directions, against the largest t any ray
+     * may still hit at), nearer child first as for one ray. At a leaf each ray tests the leaf's box with
+     * its own span ({@link #slabs}) and, when it passes, the leaf's primitives with the same kernels and
+     * {@link RayQuery#offer} as its single query, in its own {@link RayQuery}. Every box test is
+     * conservative and the tie rule is independent of the order of tests, so each ray gets the closest
+     * hit its own query finds.
+     */
+    @Override
+    public void closestHits(RayPacket p, TraceContext ctx) {
+        int n = p.size;
+        RayQuery q = query(ctx);
+        if (n < 2 || root < 0) {
+            closestEach(p, ctx);
+            return;
+        }
+        RayQuery[] lanes = q.lanes(n);
+        double[] lix = q.laneIx, liy = q.laneIy, liz = q.laneIz;
+        Ray r0 = p.rays[0];
+        double ox = r0.origin.x, oy = r0.origin.y, oz = r0.origin.z, tMin = r0.tMin;
+        boolean sx = r0.direction.x < 0, sy = r0.direction.y < 0, sz = r0.direction.z < 0;
+        double ixLo = Double.POSITIVE_INFINITY, ixHi = Double.NEGATIVE_INFINITY, iyLo = ixLo, iyHi = ixHi,
+                izLo = ixLo, izHi = ixHi;
+        boolean together = true;
+        for (int k = 0; k < n; k++) {
+            RayQuery l = lanes[k];
+            l.start(p.rays[k], p.records[k]);
+            double ix = 1 / l.dx, iy = 1 / l.dy, iz = 1 / l.dz;
+            // one origin and span, one sign per axis, no infinite inverse (the interval test needs them)
+            together &= l.ox == ox && l.oy == oy && l.oz == oz && l.tMin == tMin
+                    && (ix < 0) == sx && (iy < 0) == sy && (iz < 0) == sz
+                    && Math.abs(ix) <= Double.MAX_VALUE && Math.abs(iy) <= Double.MAX_VALUE && Math.abs(iz) <= Double.MAX_VALUE;
+            lix[k] = ix;
+            liy[k] = iy;
+            liz[k] = iz;
+            if (ix < ixLo) ixLo = ix;
+            if (ix > ixHi) ixHi = ix;
+            if (iy < iyLo) iyLo = iy;
+            if (iy > iyHi) iyHi = iy;
+            if (iz < izLo) izLo = iz;
+            if (iz > izHi) izHi = iz;
+        }
+        if (!together) {
+            closestEach(p, ctx);
+            return;
+        }
+        double far = Double.NEGATIVE_INFINITY;   // the largest t any ray of the packet may still hit at
+        for (int k = 0; k < n; k++) {
+            RayQuery l = lanes[k];
+            if (unbounded != null) {
+                unbounded.closestHit(0, unbounded.size(), Integer.MAX_VALUE, l);
+            }
+            far = Math.max(far, l.tMax);
+        }
+        float[] nb = node;
+        int[] run = slotRun, index = slotIndex;
+        PrimitiveSet[] ps = sets;
+        PrimitiveSet one = onlySet;
+        int[] stack = q.stack, stackBox = q.stackBox;
+        double[] stackT = q.stackT;
+        int sp = 0, ref = root, box = 0;
+        while (true) {
+            if (ref >= 0) {
+                int o = NODE * ref;
+                if (COUNT) {
+                    q.nodeVisits++;
+                }
+                double lo0 = slabs(nb, o, sx, sy, sz, ox, oy, oz, ixLo, ixHi, iyLo, iyHi, izLo, izHi, tMin, far);
+                double lo1 = slabs(nb, o + 6, sx, sy, sz, ox, oy, oz, ixLo, ixHi, iyLo, iyHi, izLo, izHi, tMin, far);
+                boolean h0 = lo0 <= Double.MAX_VALUE, h1 = lo1 <= Double.MAX_VALUE;
+                if (h0 && h1) {
+                    if (lo1 < lo0) {
+                        stack[sp] = Float.floatToRawIntBits(nb[o + 12]);
+                        stackBox[sp] = o;
+                        stackT[sp++] = lo0;
+                        ref = Float.floatToRawIntBits(nb[o + 13]);
+                        box = o + 6;
+                    } else {
+                        stack[sp] = Float.floatToRawIntBits(nb[o + 13]);
+                        stackBox[sp] = o + 6;
+                        stackT[sp++] = lo1;
+                        ref = Float.floatToRawIntBits(nb[o + 12]);
+                        box = o;
+                    }
+                    continue;
+                } else if (h0) {
+                    ref = Float.floatToRawIntBits(nb[o + 12]);
+                    box = o;
+                    continue;
+                } else if (h1) {
+                    ref = Float.floatToRawIntBits(nb[o + 13]);
+                    box = o + 6;
+                    continue;
+                }
+            } else {
+                // each ray: the leaf's box with its own span, then the leaf's primitives
+                double f = Double.NEGATIVE_INFINITY;
+                for (int k = 0; k < n; k++) {
+                    RayQuery l = lanes[k];
+                    if (slabs(nb, box, sx, sy, sz, ox, oy, oz, lix[k], liy[k], liz[k], tMin, l.tMax) <= Double.MAX_VALUE) {
+                        hit(~ref, l, one, run, index, ps);
+                    }
+                    if (l.tMax > f) {
+                        f = l.tMax;
+                    }
+                }
+                far = f;
+            }
+            do {
+                if (sp == 0) {
+                    for (int k = 0; k < n; k++) {
+                        p.hit[k] = finish(lanes[k], p.records[k]);
+                    }
+                    return;
+                }
+                ref = stack[--sp];
+                box = stackBox[sp];
+            } while (stackT[sp] > far * SLAB_SLACK);
+        }
+    }
+
+    /** The packet's rays traced one by one. */
+    private void closestEach(RayPacket p, TraceContext ctx) {
+        for (int k = 0; k < p.size; k++) {
+            p.hit[k] = closestHit(p.rays[k], p.records[k], ctx);
         }
     }
 
@@ -516,6 +673,49 @@ public final class Bvh implements Accelerator {
         q.occluderIndex[slot] = hit;
         q.occluderFrom[slot] = from;
         q.occluderTo[slot] = from + len;
+    }
+
+    /**
+     * The packet's slab test of the box at {@code b[o..o+5]}, for rays from one origin whose inverse
+     * directions lie in [ixLo, ixHi] x [iyLo, iyHi] x [izLo, izHi] (finite, one sign per axis, told by
+     * {@code sx, sy, sz}), over [tMin, tMax]: a lower bound of the rays' entry distances, or +infinity
+     * when no ray of the packet can meet the box. Per axis the near plane's distance is the least of the
+     * rays' and the far plane's the greatest: a plane distance (p - o) / d is monotonic in the inverse,
+     * and so is its rounded product, so the bounds are the very values {@link #slabs} computes for the
+     * rays at the ends of the range, and the interval holds every ray's interval.
+     */
+    private static double slabs(float[] b, int o, boolean sx, boolean sy, boolean sz,
+                                double ox, double oy, double oz, double ixLo, double ixHi, double iyLo, double iyHi,
+                                double izLo, double izHi, double tMin, double tMax) {
+        double lo = tMin, hi = tMax, a, c, n, f;
+        if (sx) {
+            a = b[o + 3] - ox; c = b[o] - ox;
+        } else {
+            a = b[o] - ox; c = b[o + 3] - ox;
+        }
+        n = a >= 0 ? a * ixLo : a * ixHi;
+        f = c >= 0 ? c * ixHi : c * ixLo;
+        if (n > lo) lo = n;
+        if (f < hi) hi = f;
+        if (sy) {
+            a = b[o + 4] - oy; c = b[o + 1] - oy;
+        } else {
+            a = b[o + 1] - oy; c = b[o + 4] - oy;
+        }
+        n = a >= 0 ? a * iyLo : a * iyHi;
+        f = c >= 0 ? c * iyHi : c * iyLo;
+        if (n > lo) lo = n;
+        if (f < hi) hi = f;
+        if (sz) {
+            a = b[o + 5] - oz; c = b[o + 2] - oz;
+        } else {
+            a = b[o + 2] - oz; c = b[o + 5] - oz;
+        }
+        n = a >= 0 ? a * izLo : a * izHi;
+        f = c >= 0 ? c * izHi : c * izLo;
+        if (n > lo) lo = n;
+        if (f < hi) hi = f;
+        return lo <= hi * SLAB_SLACK ? lo : Double.POSITIVE_INFINITY;
     }
 
     /**

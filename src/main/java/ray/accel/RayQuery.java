@@ -46,6 +46,13 @@ public final class RayQuery {
     /** Traversal stack of node references, and (closest hit) their entry distances. */
     final int[] stack = new int[128];
     final double[] stackT = new double[128];
+    /**
+     * A packet's traversal ({@link Bvh#closestHits}): per pending subtree its box's offset in the node
+     * array; per ray of the packet its own query and its inverse direction. Made on the first packet.
+     */
+    int[] stackBox;
+    RayQuery[] lanes = new RayQuery[0];
+    double[] laneIx, laneIy, laneIz;
     final Bvh owner;
     /** Inner nodes visited and primitives tested (counted only with -Dray.bvh.count=true). */
     long nodeVisits, primitiveTests;
@@ -55,6 +62,24 @@ public final class RayQuery {
         this.scene = scene;
         this.scratch = new double[Math.max(1, sets) * PrimitiveSet.SCRATCH];
         java.util.Arrays.fill(occluderSet, -1);
+    }
+
+    /** The per-ray queries of a packet of {@code n} rays (made on first use; kept for the thread). */
+    RayQuery[] lanes(int n) {
+        if (lanes.length < n) {
+            RayQuery[] l = java.util.Arrays.copyOf(lanes, n);
+            for (int i = lanes.length; i < n; i++) {
+                l[i] = new RayQuery(owner, scene, scratch.length / PrimitiveSet.SCRATCH);
+            }
+            lanes = l;
+            laneIx = new double[n];
+            laneIy = new double[n];
+            laneIz = new double[n];
+            if (stackBox == null) {
+                stackBox = new int[stack.length];
+            }
+        }
+        return lanes;
     }
 
     /** Starts a closest-hit query of {@code r}, to be filled into {@code rec}. */
