@@ -140,6 +140,29 @@ public class Scene {
     }
 
     /**
+     * The packet's camera rays (each one sample's, from the eye, depth 0), cast together: each ray's
+     * closest hit into its record, the same as {@link #traceCamera}'s ray for ray. Each counted as
+     * {@link RayKind#CAMERA}. Then {@link #shadeCamera} gives each ray's colour.
+     */
+    public void castCameras(RayPacket p, TraceContext ctx) {
+        for (int k = 0; k < p.size; k++) {
+            ctx.stats.count(RayKind.CAMERA);
+        }
+        accelerator().closestHits(p, ctx);
+    }
+
+    /** The colour of ray {@code k} of a packet cast by {@link #castCameras}, into {@code out}: {@link #traceCamera}'s. */
+    public void shadeCamera(RayPacket p, int k, TraceContext ctx, Vector3d out) {
+        // shadeClosest's shading, written out again: a call more there costs the short renders under C1
+        if (!p.hit[k]) {
+            out.set(backgroundColor);
+            return;
+        }
+        IntersectionRecord rec = p.records[k];
+        rec.surface.material.shadeHit(p.rays[k], rec, this, ctx, out);
+    }
+
+    /**
      * The ideal mirror reflection of {@code ray} at {@code rec} (r = d - 2 (d.n) n), cast one bounce deeper
      * and counted as {@link RayKind#MIRROR}: the colour it sees, or null when the incoming ray is already
      * at {@code MaxDepth} (nothing cast). The returned vector is {@code ctx}'s scratch for that depth: read

@@ -7,6 +7,7 @@ import javax.vecmath.Vector3d;
 import ray.Camera;
 import ray.PixelSample;
 import ray.Ray;
+import ray.RayPacket;
 import ray.RayStats;
 import ray.Scene;
 import ray.TraceContext;
@@ -278,6 +279,23 @@ public final class Renderer {
             // the camera's products a u and b v too, once per sample column and row (Camera.rayTerms)
             final double[] au = new double[3 * w * ns], bv = new double[3 * h * ns];
             scene.camera.rayTerms(planeA, au, planeB, bv);
+            if (scene.accelerator().packetsPay()) {
+                // a block of pixels' camera rays per packet: about PACKET_RAYS rays, at least a pixel's
+                final int side = Math.max(1, (int) Math.sqrt((double) PACKET_RAYS / (ns * ns)));
+                runTiles(image, new TileWork() {
+                    @Override
+                    public TileWorker worker(TraceContext ctx) {
+                        ctx.packet.reserve(side * side * ns * ns);
+                        return new TileWorker() {
+                            @Override
+                            public void tile(int x0, int y0, int x1, int y1) {
+                                packetTile(ctx, x0, y0, x1, y1, au, bv, side, grid, image, ox, oy);
+                            }
+                        };
+                    }
+                });
+                return image;
+            }
             runTiles(image, new TileWork() {
                 @Override
                 public TileWorker worker(TraceContext ctx) {
@@ -370,6 +388,82 @@ public final class Renderer {
                 rgb[k] = r / count;
                 rgb[k + 1] = g / count;
                 rgb[k + 2] = b / count;
+            }
+        }
+    }
+
+    /** Camera rays per packet ({@link #packetTile}): a square of pixels whose samples make about this many. */
+    static final int PACKET_RAYS = Integer.getInteger("ray.packetRays", 16);
+
+    /**
+     * {@link #gridTile} with the camera rays cast in packets ({@link Scene#castCameras}), for an
+     * accelerator that says they pay: the tile in squares of {@code side} x {@code side} pixels, each
+     * square's rays (pixel by pixel, each pixel's samples in order; the same rays as {@link #gridTile}'s,
+     * bit for bit) cast together, then shaded and summed pixel by pixel, sample by sample, as there. A
+     * sample's colour depends on nothing but its pixel and number, so the order of the squares does not
+     * change the image.
+     */
+    private void packetTile(TraceContext ctx, int x0, int y0, int x1, int y1, double[] au, double[] bv, int side,
+                            Sampler grid, Image image, int ox, int oy) {
+        Camera cam = scene.camera;
+        double ex = cam.eye.x, ey = cam.eye.y, ez = cam.eye.z, wx = cam.w.x, wy = cam.w.y, wz = cam.w.z;
+        int n = ns, count = n * n, iw = image.width;
+        double[] rgb = image.rgb;
+        Vector3d c = ctx.color(0);
+        PixelSample sample = ctx.sample;
+        RayPacket p = ctx.packet;
+        Ray[] rays = p.rays;
+        for (int by = y0; by < y1; by += side) {
+            int ye = Math.min(by + side, y1);
+            for (int bx = x0; bx < x1; bx += side) {
+                int xe = Math.min(bx + side, x1);
+                int k = 0;
+                for (int y = by; y < ye; y++) {
+                    for (int x = bx; x < xe; x++) {
+                        for (int j = 0; j < n; j++) {
+                            int jb = 3 * (y * n + j);
+                            double bx3 = bv[jb], by3 = bv[jb + 1], bz3 = bv[jb + 2];
+                            for (int i = 0, ia = 3 * x * n; i < n; i++, ia += 3) {
+                                double dx = au[ia] + bx3 - wx, dy = au[ia + 1] + by3 - wy, dz = au[ia + 2] + bz3 - wz;
+                                double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+                                Ray ray = rays[k++];
+                                Vector3d o = ray.origin, d = ray.direction;
+                                o.x = ex;
+                                o.y = ey;
+                                o.z = ez;
+                                d.x = dx / len;
+                                d.y = dy / len;
+                                d.z = dz / len;
+                                ray.tMin = 0;
+                                ray.tMax = Double.POSITIVE_INFINITY;
+                                ray.depth = 0;
+                            }
+                        }
+                    }
+                }
+                p.size = k;
+                scene.castCameras(p, ctx);
+                k = 0;
+                for (int y = by; y < ye; y++) {
+                    for (int x = bx; x < xe; x++) {
+                        double r = 0, g = 0, b = 0;
+                        for (int s = 0; s < count; s++, k++) {
+                            sample.start(grid, x, y, s);
+                            scene.shadeCamera(p, k, ctx, c);
+                            if (Double.isFinite(c.x) && Double.isFinite(c.y) && Double.isFinite(c.z)) {
+                                r += c.x;
+                                g += c.y;
+                                b += c.z;
+                            } else {
+                                ctx.stats.invalidSamples++;   // last line of defence: a NaN never reaches a pixel
+                            }
+                        }
+                        int q = 3 * ((y - oy) * iw + (x - ox));
+                        rgb[q] = r / count;
+                        rgb[q + 1] = g / count;
+                        rgb[q + 2] = b / count;
+                    }
+                }
             }
         }
     }

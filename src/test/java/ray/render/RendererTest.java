@@ -130,6 +130,39 @@ class RendererTest {
         }
     }
 
+    /** BUSY with {@code aa} samples and a field of 300 small spheres: a BVH deep enough for camera-ray packets. */
+    private static Scene crowded(int aa) throws Exception {
+        StringBuilder b = new StringBuilder(BUSY.replace("AASamples 3", "AASamples " + aa));
+        java.util.Random r = new java.util.Random(20);
+        for (int i = 0; i < 300; i++) {
+            b.append("Surface Sphere\nVector3d center [").append(-4 + 8 * r.nextDouble()).append(' ')
+                    .append(-1 + 2 * r.nextDouble()).append(' ').append(-4 + 4 * r.nextDouble())
+                    .append("]\ndouble radius ").append(0.05 + 0.15 * r.nextDouble())
+                    .append(i % 3 == 0 ? "\nref material mirror\n\n" : "\nref material shiny\n\n");
+        }
+        return parse(b.toString());
+    }
+
+    /**
+     * Where the BVH says packets pay, the grid render casts a block of camera rays together
+     * (Renderer.packetTile): the image is bit for bit the one single rays give (a camera making its own
+     * rays is traced ray by ray), for any thread count, and every camera ray is counted once.
+     */
+    @Test
+    void cameraRayPacketsGiveTheSingleRaysImage() throws Exception {
+        for (int aa : new int[] {1, 2, 3}) {
+            Scene s = crowded(aa);
+            Renderer packets = new Renderer(s).threads(1);
+            Image one = packets.render();
+            assertTrue(s.accelerator().packetsPay(), "the scene's BVH is deep enough for packets");
+            assertEquals(70L * 40 * aa * aa, packets.stats().get(RayKind.CAMERA), "camera rays counted once each");
+            Image own = new Renderer(withCamera(crowded(aa), new OwnRays())).threads(1).render();
+            assertTrue(Arrays.equals(one.rgb, own.rgb), "packets differ from single rays, AASamples " + aa);
+            Image three = new Renderer(crowded(aa)).threads(3).render();
+            assertTrue(Arrays.equals(one.rgb, three.rgb), "3 threads differ from 1, AASamples " + aa);
+        }
+    }
+
     /** A camera whose class makes its own rays (it overrides setRay) is rendered through them. */
     static class OwnRays extends Camera {
         @Override
