@@ -119,8 +119,18 @@ fi
 # full tiered compilation comes after the build's options and before the user's. Unset, the program may
 # start this script again, by this path (an environment variable: never read by the shell again), with
 # RAYTRACER_JIT=long when its render plan says the render is long, unless the user's options chose a JIT.
+# Long: at least four compiler threads (the JVM gives 2 CPUs two, one of them C2's, and 8 CPUs four). A
+# long render's hottest methods are recompiled several times as rare branches and types turn up, and
+# while a compilation waits in one C2 thread's queue every render thread runs the slower profiled code:
+# classichd 0.93x, mesh1m 0.94x the CPU time (docs/performance.md, "Long renders: the JIT's warm-up").
+# Raised only where the online CPU count (one getconf, long renders only) is below 8; a user's
+# -XX:CICompilerCount comes later and wins.
 case ${RAYTRACER_JIT-} in
-    long) set -- -XX:TieredStopAtLevel=4 "$@" ;;
+    long)
+        case $(getconf _NPROCESSORS_ONLN 2>/dev/null) in
+            [1-7]) set -- -XX:CICompilerCount=4 "$@" ;;
+        esac
+        set -- -XX:TieredStopAtLevel=4 "$@" ;;
     short) ;;
     *)
         case " $JAVA_OPTS $RAYTRACER_OPTS " in

@@ -14,8 +14,9 @@ import ray.plan.RenderPlan;
  *
  * <p>{@code bin/raytracer} starts the JVM with C1 only ({@code -XX:TieredStopAtLevel=1}): a render of a
  * second or two is over before C2 would have paid for its compilations, and full tiered compilation
- * costs such a render 1.5-2.5x the CPU time. A render of tens of seconds is the other way round: C2's
- * code traces about 1.25x faster, and its compilations are a rounding error. A JVM's compilers are fixed
+ * costs such a render 1.5-2.5x the CPU time. A render of many seconds is the other way round: C2's code
+ * traces 10-15% faster, which pays for its compilations (the launcher gives a long render at least four
+ * compiler threads, so they land sooner: docs/performance.md, "Long renders: the JIT's warm-up"). A JVM's compilers are fixed
  * when it starts, so when the launcher allows it (it sets {@code RAYTRACER_RELAUNCH} to its own path
  * unless {@code RAYTRACER_JIT} or the user's JVM options choose the JIT) and the first scene of the
  * command line is long, this process runs the launcher again on the same command line with
@@ -29,9 +30,9 @@ final class JitPolicy {
 
     /**
      * Expected rays (camera rays and the shadow rays of their first hits) from which a render is long.
-     * Measured (docs/performance.md): the classic scene with 9x9 samples (75 M such rays, 6.5 CPU s under
-     * C1) is at parity, classichd (133 M, 11 CPU s) takes 0.8x the CPU under C2, and the 640x480 classic
-     * scene (8 M) 2.1x.
+     * Measured (docs/performance.md, session 26): the classic scene with 9x9 samples (75 M such rays, 3.8
+     * CPU s under C1) takes 1.13x the CPU under C2, classichd (133 M, 6.9 CPU s) 0.94x, and the 640x480
+     * classic scene (8 M) about 2x: the break-even lies near 1.15e8.
      */
     static final double LONG_RAYS = 1e8;
     /** The environment variable the launcher sets to its own path when this process may start it again. */
@@ -48,7 +49,7 @@ final class JitPolicy {
     /**
      * Expected rays from which a scene with {@link #MESH_BYTES} of OBJ files is long. A ray costs a large
      * mesh several times what it costs the classic scene (a deeper tree), so C2 pays from fewer rays:
-     * mesh1m (35 M such rays, 998,000 triangles) takes 0.8x the CPU under C2 (docs/performance.md).
+     * mesh1m (35 M such rays, 998,000 triangles) takes 0.9x the CPU under C2 (docs/performance.md).
      */
     static final double MESH_RAYS = 2e7;
 

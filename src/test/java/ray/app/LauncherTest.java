@@ -135,6 +135,35 @@ class LauncherTest {
     }
 
     /**
+     * A long render (RAYTRACER_JIT=long, as the JIT policy starts it) runs full tiered compilation with at
+     * least four compiler threads (the JVM's own choice on 2 CPUs is two, one for C2: docs/performance.md,
+     * "Long renders: the JIT's warm-up"), a user's -XX:CICompilerCount wins, and a short one keeps C1 only
+     * and the JVM's own count.
+     */
+    @Test
+    void aLongRenderGetsC2AndAtLeastFourCompilerThreads() throws Exception {
+        Path script = installHome().resolve("bin/raytracer");
+        Run longRun = run(script, dir, Map.of("RAYTRACER_JIT", "long", "JAVA_OPTS", "-XX:+PrintFlagsFinal"), "--version");
+        assertEquals(0, longRun.status, longRun.err);
+        assertEquals(4, flag(longRun.out, "TieredStopAtLevel"));
+        assertTrue(flag(longRun.out, "CICompilerCount") >= 4, longRun.out);
+        Run own = run(script, dir, Map.of("RAYTRACER_JIT", "long", "JAVA_OPTS", "-XX:+PrintFlagsFinal -XX:CICompilerCount=2"),
+                "--version");
+        assertEquals(2, flag(own.out, "CICompilerCount"), "the user's count wins");
+        Run shortRun = run(script, dir, Map.of("RAYTRACER_JIT", "short", "JAVA_OPTS", "-XX:+PrintFlagsFinal"), "--version");
+        assertEquals(1, flag(shortRun.out, "TieredStopAtLevel"));
+        assertTrue(shortRun.out.matches("(?s).*\\bCICompilerCount\\s+=\\s+\\d+\\s+\\{product\\} \\{ergonomic\\}.*"),
+                "a short render keeps the JVM's own count: " + shortRun.out);
+    }
+
+    /** The value of JVM flag {@code name} in -XX:+PrintFlagsFinal's table. */
+    private static long flag(String table, String name) {
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile("\\b" + name + "\\s+=\\s+(\\d+)").matcher(table);
+        assertTrue(m.find(), name + " in " + table);
+        return Long.parseLong(m.group(1));
+    }
+
+    /**
      * Under LC_ALL=C (cron, containers) a scene named café.txt renders: the launcher gives the JVM a UTF-8
      * locale where the user's is not, so the name is not decoded as 'caf??.txt'. The name's bytes are made
      * by the shell, whatever this test JVM's own encoding.
