@@ -13,17 +13,17 @@ import ray.plan.RenderPlan;
  * (docs/performance.md, "The JIT policy").
  *
  * <p>{@code bin/raytracer} starts the JVM with C1 only ({@code -XX:TieredStopAtLevel=1}): a render of a
- * second or two is over before C2 would have paid for its compilations, and full tiered compilation
- * costs such a render 1.5-2.5x the CPU time. A render of many seconds is the other way round: C2's code
- * traces 10-15% faster, which pays for its compilations (the launcher gives a long render at least four
- * compiler threads, so they land sooner: docs/performance.md, "Long renders: the JIT's warm-up"). A JVM's compilers are fixed
- * when it starts, so when the launcher allows it (it sets {@code RAYTRACER_RELAUNCH} to its own path
- * unless {@code RAYTRACER_JIT} or the user's JVM options choose the JIT) and the first scene of the
+ * second or two is over before C2 would have paid for its compilations, and full tiered compilation costs
+ * such a render 1.5-2.5x the CPU time. A render of many seconds is the other way round: C2's code traces
+ * 10-15% faster, which pays for its compilations (the launcher gives a long render at least four compiler
+ * threads, so they land sooner: docs/performance.md, "Long renders: the JIT's warm-up"). A JVM's compilers
+ * are fixed when it starts, so when the launcher allows it (it sets {@code RAYTRACER_RELAUNCH} to its own
+ * path unless {@code RAYTRACER_JIT} or the user's JVM options choose the JIT) and the first scene of the
  * command line is long, this process runs the launcher again on the same command line with
- * {@code RAYTRACER_JIT=long} (full tiered compilation), passes its standard streams through and ends
- * with that process's exit status. Nothing has been printed or written by then; the cost is one more
- * JVM start and a second parse of the first scene (a few percent of a long render). A scene with large
- * OBJ meshes is judged before they are read ({@link #isLongBeforeFiles}, told by the parser through
+ * {@code RAYTRACER_JIT=long} (full tiered compilation), passes its standard streams through and ends with
+ * that process's exit status. Nothing has been printed or written by then; the cost is one more JVM start
+ * and a second parse of the first scene (a few percent of a long render). A scene with large OBJ meshes is
+ * judged before they are read ({@link #isLongBeforeFiles}, told by the parser through
  * {@link BeforeMeshes}), so that a long mesh render does not read its files twice.
  */
 final class JitPolicy {
