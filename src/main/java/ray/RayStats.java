@@ -22,6 +22,11 @@ public final class RayStats implements java.io.Serializable {
         rays[kind.ordinal()]++;
     }
 
+    /** {@code n} more rays of {@code kind} (a packet's): called by the casting methods of {@link Scene} only. */
+    void count(RayKind kind, int n) {
+        rays[kind.ordinal()] += n;
+    }
+
     public void add(RayStats o) {
         for (int i = 0; i < rays.length; i++) {
             rays[i] += o.rays[i];

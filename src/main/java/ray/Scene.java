@@ -145,9 +145,7 @@ public class Scene {
      * {@link RayKind#CAMERA}. Then {@link #shadeCamera} gives each ray's colour.
      */
     public void castCameras(RayPacket p, TraceContext ctx) {
-        for (int k = 0; k < p.size; k++) {
-            ctx.stats.count(RayKind.CAMERA);
-        }
+        ctx.stats.count(RayKind.CAMERA, p.size);
         accelerator().closestHits(p, ctx);
     }
 

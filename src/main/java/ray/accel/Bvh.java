@@ -411,7 +411,7 @@ public final class Bvh implements Accelerator {
         int n = p.size;
         RayQuery q = query(ctx);
         if (n < 2 || root < 0) {
-            closestEach(p, ctx);
+            Accelerator.super.closestHits(p, ctx);   // ray by ray
             return;
         }
         RayQuery[] lanes = q.lanes(n);
@@ -441,7 +441,7 @@ public final class Bvh implements Accelerator {
             if (iz > izHi) izHi = iz;
         }
         if (!together) {
-            closestEach(p, ctx);
+            Accelerator.super.closestHits(p, ctx);   // ray by ray
             return;
         }
         double far = Double.NEGATIVE_INFINITY;   // the largest t any ray of the packet may still hit at
@@ -516,13 +516,6 @@ public final class Bvh implements Accelerator {
                 ref = stack[--sp];
                 box = stackBox[sp];
             } while (stackT[sp] > far * SLAB_SLACK);
-        }
-    }
-
-    /** The packet's rays traced one by one. */
-    private void closestEach(RayPacket p, TraceContext ctx) {
-        for (int k = 0; k < p.size; k++) {
-            p.hit[k] = closestHit(p.rays[k], p.records[k], ctx);
         }
     }
 
