@@ -31,7 +31,10 @@ import ray.surface.Surface;
  * min/max) and leave the interval unchanged when a slab distance is NaN, so they stay conservative.
  * A leaf's slots are grouped by set, and each run of one set's slots is handed to that set. Where two
  * primitives are hit at exactly the same t, the one in the earlier leaf slot wins, whatever the order
- * they were tested in ({@link RayQuery#offer}). Camera rays leaving the eye may be traced as a packet
+ * they were tested in ({@link RayQuery#offer}; the kernels test candidates against
+ * {@link RayQuery#candidateBound}, so none at exactly the best t is turned away by its own rounding). A long
+ * render of a large tree may traverse it four boxes at a time instead ({@link Wide4}, {@link #WIDE}): the
+ * same leaves, kernels and answers. Camera rays leaving the eye may be traced as a packet
  * ({@link #closestHits}): inner nodes tested once for the whole packet, leaves ray by ray, each ray's
  * answer its single query's.
  *
@@ -50,7 +53,19 @@ public final class Bvh implements Accelerator {
     /** Floats per inner node in {@link #node}. */
     static final int NODE = 14;
     /** Widens the far slab distance to cover rounding in the box test (pbrt: 1 + 2 gamma(3)). */
-    private static final double SLAB_SLACK = 1 + 8 * 0x1p-53;
+    static final double SLAB_SLACK = 1 + 8 * 0x1p-53;
+    /**
+     * Whether large trees are traversed four boxes at a time ({@link Wide4}): asked for by
+     * {@code -Dray.bvh.wide=true} (the launcher passes it to a long render, with the Vector API's module)
+     * and the module {@code jdk.incubator.vector} in the boot layer. Short renders run C1, where the
+     * Vector API is many times slower than scalar code; they never ask.
+     */
+    static final boolean WIDE = Boolean.getBoolean("ray.bvh.wide") && ModuleLayer.boot().findModule("jdk.incubator.vector").isPresent();
+    /**
+     * Inner nodes from which a tree is traversed wide when {@link #WIDE}: a small tree (classic's five
+     * primitives) is one or two binary nodes, and there the wide traversal's set-up costs more than it saves.
+     */
+    static final int WIDE_NODES = Integer.getInteger("ray.bvh.wideNodes", 1024);
 
     private final Scene scene;
     private final int root;
@@ -61,6 +76,8 @@ public final class Bvh implements Accelerator {
      * count)}): one array, so a visit reads one or two cache lines and the JIT checks its bounds once.
      */
     private final float[] node;
+    /** The tree four children a node, where traversed wide (then {@link #node} is null), else null. */
+    private final Wide4 wide;
     private final int nodeCount;
     /**
      * Per leaf slot starting a run of one set's slots: set number << 4 | run length (other slots: unused).
@@ -77,12 +94,14 @@ public final class Bvh implements Accelerator {
     private final int primitives;
     private final long buildNanos;
 
-    private Bvh(Scene scene, BvhBuilder b, List<Surface> bounded, List<Surface> unboundedList, long buildNanos) {
+    private Bvh(Scene scene, BvhBuilder b, List<Surface> bounded, List<Surface> unboundedList, long buildNanos, int wideNodes) {
         this.scene = scene;
         this.root = b.root;
         this.rootBox = b.rootBox;
-        this.node = pack(b.nodeBox, b.nodeChild);
         this.nodeCount = b.nodeChild.length / 2;
+        float[] binary = pack(b.nodeBox, b.nodeChild);
+        this.wide = root >= 0 && nodeCount >= wideNodes ? new Wide4(binary, root, nodeCount) : null;
+        this.node = wide == null ? binary : null;
         this.buildNanos = buildNanos;
         this.primitives = bounded.size() + unboundedList.size();
         int n = b.order.length;
@@ -211,6 +230,14 @@ public final class Bvh implements Accelerator {
      * leaving out those that can never be hit.
      */
     public static Bvh build(List<Surface> sceneSurfaces, Scene scene) {
+        return build(sceneSurfaces, scene, WIDE ? WIDE_NODES : Integer.MAX_VALUE);
+    }
+
+    /**
+     * {@link #build(List, Scene)}, traversed wide ({@link Wide4}) when the tree has at least
+     * {@code wideNodes} inner nodes (the module {@code jdk.incubator.vector} must then be present).
+     */
+    static Bvh build(List<Surface> sceneSurfaces, Scene scene, int wideNodes) {
         long t0 = System.nanoTime();
         List<Surface> surfaces = new ArrayList<>(sceneSurfaces.size());
         for (Surface s : sceneSurfaces) {
@@ -240,7 +267,12 @@ public final class Bvh implements Accelerator {
         }
         BvhBuilder b = new BvhBuilder(box, bounded.size());
         b.build();
-        return new Bvh(scene, b, bounded, unbounded, System.nanoTime() - t0);
+        return new Bvh(scene, b, bounded, unbounded, System.nanoTime() - t0, wideNodes);
+    }
+
+    /** Whether this tree is traversed four boxes at a time ({@link Wide4}). */
+    boolean isWide() {
+        return wide != null;
     }
 
     /** Inner nodes (a tree of one leaf has none). */
@@ -259,7 +291,7 @@ public final class Bvh implements Accelerator {
 
     /** Bytes held by the tree and its packed primitives (not the scene's Surface objects). */
     public long memoryBytes() {
-        long m = 4L * node.length + (slotRun == null ? 0 : 4L * slotRun.length + 4L * slotIndex.length);
+        long m = (wide != null ? wide.memoryBytes() : 4L * node.length) + (slotRun == null ? 0 : 4L * slotRun.length + 4L * slotIndex.length);
         for (PrimitiveSet s : sets) {
             m += s.memoryBytes();
         }
@@ -310,6 +342,9 @@ public final class Bvh implements Accelerator {
         // and most rays (all shadow rays) are inside the scene's box
         if (root < 0 && !(slabs(rootBox, 0, sx, sy, sz, ox, oy, oz, ix, iy, iz, tMin, q.tMax) <= Double.MAX_VALUE)) {
             return finish(q, rec);
+        }
+        if (wide != null) {
+            return wide.closestHit(this, q, rec, ix, iy, iz);
         }
         float[] nb = node;
         int[] run = slotRun, index = slotIndex;
@@ -368,6 +403,10 @@ public final class Bvh implements Accelerator {
      * it loaded once per query ({@link #onlySet}, {@link #slotRun}, {@link #slotIndex}, {@link #sets}),
      * which C1 would otherwise load again at every leaf.
      */
+    void hit(int leaf, RayQuery q) {
+        hit(leaf, q, onlySet, slotRun, slotIndex, sets);
+    }
+
     private static void hit(int leaf, RayQuery q, PrimitiveSet one, int[] run, int[] index, PrimitiveSet[] ps) {
         int first = leaf >>> 4, end = first + (leaf & 15);
         if (COUNT) {
@@ -389,7 +428,7 @@ public final class Bvh implements Accelerator {
 
     @Override
     public boolean packetsPay() {
-        return nodeCount >= PACKET_NODES;
+        return wide == null && nodeCount >= PACKET_NODES;
     }
 
     /**
@@ -410,8 +449,8 @@ public final class Bvh implements Accelerator {
     public void closestHits(RayPacket p, TraceContext ctx) {
         int n = p.size;
         RayQuery q = query(ctx);
-        if (n < 2 || root < 0) {
-            Accelerator.super.closestHits(p, ctx);   // ray by ray
+        if (n < 2 || root < 0 || wide != null) {
+            Accelerator.super.closestHits(p, ctx);   // ray by ray (a wide tree's single-ray traversal beats the binary packets)
             return;
         }
         RayQuery[] lanes = q.lanes(n);
@@ -520,7 +559,7 @@ public final class Bvh implements Accelerator {
     }
 
     /** Fills the record for the closest hit found (a set of user surfaces has filled it already). */
-    private static boolean finish(RayQuery q, IntersectionRecord rec) {
+    static boolean finish(RayQuery q, IntersectionRecord rec) {
         PrimitiveSet s = q.hitSet;
         if (s == null) {
             return false;
@@ -564,6 +603,9 @@ public final class Bvh implements Accelerator {
             }
             return false;
         }
+        if (wide != null) {
+            return wide.anyHit(this, q, slot, cache, ix, iy, iz);
+        }
         float[] nb = node;
         int[] run = slotRun, index = slotIndex;
         PrimitiveSet[] ps = sets;
@@ -594,30 +636,8 @@ public final class Bvh implements Accelerator {
                     ref = Float.floatToRawIntBits(nb[o + 13]);
                     continue;
                 }
-            } else {
-                int leaf = ~ref, first = leaf >>> 4, end = first + (leaf & 15);
-                if (COUNT) {
-                    q.primitiveTests += leaf & 15;
-                }
-                if (one != null) {
-                    if (one.anyHit(first, end, q)) {
-                        if (cache) {
-                            remember(q, slot, 0, first, end - first);
-                        }
-                        return true;
-                    }
-                } else {
-                    for (int i = first; i < end; ) {
-                        int r = run[i], len = r & 15, from = index[i];
-                        if (ps[r >>> 4].anyHit(from, from + len, q)) {
-                            if (cache) {
-                                remember(q, slot, r >>> 4, from, len);
-                            }
-                            return true;
-                        }
-                        i += len;
-                    }
-                }
+            } else if (hit(~ref, q, slot, cache, one, run, index, ps)) {
+                return true;
             }
             if (sp == 0) {
                 if (cache) {
@@ -627,6 +647,43 @@ public final class Bvh implements Accelerator {
             }
             ref = stack[--sp];
         }
+    }
+
+    /**
+     * The any-hit tests of a leaf ({@code first slot << 4 | count}) for query {@code q}: each run of one
+     * set's slots handed to its set until one is hit, which is then remembered for occluder-cache slot
+     * {@code slot} (when {@code cache}). Named hit for the launcher's C1 inlining, as the closest-hit one.
+     */
+    private boolean hit(int leaf, RayQuery q, int slot, boolean cache, PrimitiveSet one, int[] run, int[] index, PrimitiveSet[] ps) {
+        int first = leaf >>> 4, end = first + (leaf & 15);
+        if (COUNT) {
+            q.primitiveTests += leaf & 15;
+        }
+        if (one != null) {
+            if (one.anyHit(first, end, q)) {
+                if (cache) {
+                    remember(q, slot, 0, first, end - first);
+                }
+                return true;
+            }
+            return false;
+        }
+        for (int i = first; i < end; ) {
+            int r = run[i], len = r & 15, from = index[i];
+            if (ps[r >>> 4].anyHit(from, from + len, q)) {
+                if (cache) {
+                    remember(q, slot, r >>> 4, from, len);
+                }
+                return true;
+            }
+            i += len;
+        }
+        return false;
+    }
+
+    /** {@link #hit(int, RayQuery, int, boolean, PrimitiveSet, int[], int[], PrimitiveSet[])} with this tree's sets. */
+    boolean hit(int leaf, RayQuery q, int slot, boolean cache) {
+        return hit(leaf, q, slot, cache, onlySet, slotRun, slotIndex, sets);
     }
 
     /**

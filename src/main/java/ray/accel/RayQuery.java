@@ -44,8 +44,11 @@ public final class RayQuery {
             occluderFrom = new int[Accelerator.CACHE_SLOTS], occluderTo = new int[Accelerator.CACHE_SLOTS];
 
     /** Traversal stack of node references, and (closest hit) their entry distances. */
-    final int[] stack = new int[128];
-    final double[] stackT = new double[128];
+    final int[] stack = new int[Wide4.STACK];
+    final double[] stackT = new double[Wide4.STACK];
+    /** A wide node's four entry distances, then the entered ones sorted, and their references ({@link Wide4}). */
+    final double[] wideT = new double[8];
+    final int[] wideRef = new int[4];
     /**
      * A packet's traversal ({@link Bvh#closestHits}): per pending subtree its box's offset in the node
      * array; per ray of the packet its own query and its inverse direction. Made on the first packet.
@@ -100,10 +103,24 @@ public final class RayQuery {
         setUp = 0;
     }
 
+    /** {@link #candidateBound}'s widening: covers the rounding of a kernel's scaled test (4 eps) with room. */
+    private static final double CANDIDATE_SLACK = 1 + 0x1p-48;
+
     /**
-     * A closest-hit candidate at t (already known to be in [tMin, tMax]) from primitive {@code index} of
-     * {@code set}, in leaf slot {@code slot}: taken when nearer than the best so far, or as near and in an
-     * earlier slot (so ties do not depend on the order of tests). Returns whether it was taken; then
+     * The bound a closest-hit kernel tests a candidate's t against: {@link #tMax} widened by 2^-48 of it.
+     * The triangle kernel rejects a t above its bound before its division (tScaled > tMax det, rounded),
+     * which can turn away a primitive whose t, once divided, equals tMax exactly; the tie {@link #offer}
+     * decides by slot would then be decided by which primitive was tested first, and so by the traversal's
+     * order. Widened, every t up to tMax reaches offer, which compares exactly and rejects the rest.
+     */
+    public double candidateBound() {
+        return tMax * CANDIDATE_SLACK;
+    }
+
+    /**
+     * A closest-hit candidate at t (already known to be in [tMin, {@link #candidateBound}]) from primitive
+     * {@code index} of {@code set}, in leaf slot {@code slot}: taken when nearer than the best so far, or as
+     * near and in an earlier slot (so ties do not depend on the order of tests). Returns whether it was taken; then
      * {@link #tMax} is t and the set should leave what its fill needs in {@link #hitData}.
      */
     public boolean offer(double t, PrimitiveSet set, int index, int slot) {

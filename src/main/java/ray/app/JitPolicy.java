@@ -119,7 +119,7 @@ final class JitPolicy {
             } catch (RuntimeException e) {
                 return;   // a setting the scene does not allow yet: the parse reports it, the plan decides later
             }
-            if (isLong && main.relaunchNow()) {
+            if (isLong && main.relaunchNow(true)) {   // MESH_BYTES of OBJ files: some 270,000 triangles
                 throw new Relaunched();
             }
         }
@@ -143,17 +143,51 @@ final class JitPolicy {
     }
 
     /**
-     * Runs {@code launcher args} with {@code RAYTRACER_JIT=long}, this process's standard streams passed
-     * through, and returns its exit status; -1 when it could not be started (the caller renders here).
+     * Set to 1 in a long render's environment when its scene is large ({@link #wantsWide}) and this JDK
+     * has the Vector API's module: the launcher then adds the module, and the tree is traversed four boxes
+     * at a time ({@code ray.accel.Wide4}). A value the user set (0: never) is left as it is.
+     */
+    static final String SIMD = "RAYTRACER_SIMD";
+    /**
+     * Primitives from which a long render's tree is traversed wide: about the tree of 1,024 inner nodes from
+     * which the BVH does so ({@code Bvh.WIDE_NODES}). Below it (classichd: five primitives) the JVM is not
+     * given the module at all: it would only cost the render its start-up.
+     */
+    static final long WIDE_PRIMITIVES = 2048;
+
+    /** Whether a scene of {@code surfaces} is large enough for the wide traversal ({@link #WIDE_PRIMITIVES}). */
+    static boolean wantsWide(List<ray.surface.Surface> surfaces) {
+        long n = 0;
+        for (int i = 0; i < surfaces.size() && n < WIDE_PRIMITIVES; i++) {   // indexed: no iterator
+            n += surfaces.get(i).plannedPrimitiveCount();
+        }
+        return n >= WIDE_PRIMITIVES;
+    }
+
+    /** Whether this JDK's own modules include {@code jdk.incubator.vector} (not added to this JVM). */
+    static boolean vectorModule() {
+        try {
+            return java.lang.module.ModuleFinder.ofSystem().find("jdk.incubator.vector").isPresent();
+        } catch (RuntimeException e) {
+            return false;
+        }
+    }
+
+    /**
+     * Runs {@code launcher args} with {@code RAYTRACER_JIT=long} (and {@link #SIMD} where {@code wide}),
+     * this process's standard streams passed through, and returns its exit status; -1 when it could not be started (the caller renders here).
      * A shutdown hook ends the child if this process is stopped first.
      */
-    static int relaunch(String launcher, String[] args) {
+    static int relaunch(String launcher, String[] args, boolean wide) {
         List<String> cmd = new ArrayList<>(args.length + 1);
         cmd.add(launcher);
         cmd.addAll(List.of(args));
         ProcessBuilder pb = new ProcessBuilder(cmd).inheritIO();
         pb.environment().put("RAYTRACER_JIT", "long");
         pb.environment().remove(RELAUNCH);
+        if (wide && !pb.environment().containsKey(SIMD) && vectorModule()) {
+            pb.environment().put(SIMD, "1");
+        }
         Process p;
         try {
             p = pb.start();

@@ -516,7 +516,7 @@ public final class Main implements Callable<Integer> {
         if (!mayRelaunch || fromStdin || !JitPolicy.isLong(plan, name, allowLong)) {
             return false;
         }
-        return relaunchNow();
+        return relaunchNow(JitPolicy.wantsWide(plan.scene().surfaces));
     }
 
     /**
@@ -530,14 +530,15 @@ public final class Main implements Callable<Integer> {
 
     /**
      * Runs the whole command line again under C2, once, and returns true (its status is then this
-     * command's), or false when this process may not or the launcher could not be started.
+     * command's), or false when this process may not or the launcher could not be started. {@code wide}:
+     * the scene's tree is large enough for the SIMD traversal ({@link JitPolicy#wantsWide}).
      */
-    boolean relaunchNow() {
+    boolean relaunchNow(boolean wide) {
         if (!mayRelaunch) {
             return false;
         }
         mayRelaunch = false;
-        relaunched = JitPolicy.relaunch(JitPolicy.launcher(), args);
+        relaunched = JitPolicy.relaunch(JitPolicy.launcher(), args, wide);
         return relaunched >= 0;
     }
 

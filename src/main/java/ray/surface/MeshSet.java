@@ -129,10 +129,10 @@ final class MeshSet extends PrimitiveSet {
         double tMin = q.tMin;
         boolean both = twoSided;
         for (int i = from; i < to; i++, slot++) {
-            double t = Triangle.hit(tv, 9 * i, kx, ky, kz, sx, sy, sz, okx, oky, okz, tMin, q.tMax, k, b);
+            double t = Triangle.hit(tv, 9 * i, kx, ky, kz, sx, sy, sz, okx, oky, okz, tMin, q.candidateBound(), k, b);
             double back = 0;
             if (t != t && both) {
-                t = Triangle.hit(tv, 9 * i, ky, kx, kz, sy, sx, sz, oky, okx, okz, tMin, q.tMax, k, b);
+                t = Triangle.hit(tv, 9 * i, ky, kx, kz, sy, sx, sz, oky, okx, okz, tMin, q.candidateBound(), k, b);
                 back = 1;
             }
             if (t == t && q.offer(t, this, i, slot)) {

@@ -62,7 +62,7 @@ final class TriangleSet extends PrimitiveSet {
         double okx = k[at + Triangle.OX], oky = k[at + Triangle.OY], okz = k[at + Triangle.OZ];
         double tMin = q.tMin;
         for (int i = from; i < to; i++, slot++) {
-            double t = Triangle.hit(tv, 9 * i, kx, ky, kz, sx, sy, sz, okx, oky, okz, tMin, q.tMax, k, b);
+            double t = Triangle.hit(tv, 9 * i, kx, ky, kz, sx, sy, sz, okx, oky, okz, tMin, q.candidateBound(), k, b);
             if (t == t && q.offer(t, this, i, slot)) {
                 double[] h = q.hitData;
                 h[0] = k[b];

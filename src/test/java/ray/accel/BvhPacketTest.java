@@ -60,7 +60,7 @@ class BvhPacketTest {
         }
     }
 
-    private static List<Surface> scene(Random r, List<Vector3d> vertices) {
+    static List<Surface> scene(Random r, List<Vector3d> vertices) {
         List<Surface> l = new ArrayList<>();
         grid(r, 14, l, vertices);
         for (int i = 0; i < 150; i++) {

@@ -172,12 +172,13 @@ class CommandLineProcessTest {
     /**
      * The JIT policy (JitPolicy): a long first scene starts the launcher named by RAYTRACER_RELAUNCH again
      * with RAYTRACER_JIT=long on the same command line, renders nothing itself and ends with that
-     * process's status; a short one renders here and leaves the launcher alone.
+     * process's status; a short one renders here and leaves the launcher alone. A scene of a few primitives
+     * does not get the SIMD traversal's module (RAYTRACER_SIMD); a large one does (below).
      */
     @Test
     void longRenderStartsTheLauncherAgainUnderC2() throws Exception {
         Path fake = dir.resolve("fake-launcher");
-        Files.writeString(fake, "#!/bin/sh\necho \"$RAYTRACER_JIT|${RAYTRACER_RELAUNCH-unset}|$*\" > " + dir.resolve("relaunched.txt") + "\nexit 7\n");
+        Files.writeString(fake, "#!/bin/sh\necho \"$RAYTRACER_JIT|${RAYTRACER_RELAUNCH-unset}|${RAYTRACER_SIMD-unset}|$*\" > " + dir.resolve("relaunched.txt") + "\nexit 7\n");
         assertTrue(fake.toFile().setExecutable(true));
         Files.writeString(dir.resolve("long.txt"), "Width 4000\nHeight 3000\nAASamples 3\n\nCamera Camera\n"
                 + "Light PointLight\nVector3d position [0 5 0]\n");   // 108 M camera rays, as many shadow rays
@@ -185,7 +186,7 @@ class CommandLineProcessTest {
         Map<String, String> env = Map.of("RAYTRACER_RELAUNCH", fake.toString());
         Result r = raytracer(null, env, null, "-q", "long.txt", "short.txt");
         assertEquals(7, r.status(), r.err());
-        assertEquals("long|unset|-q long.txt short.txt", Files.readString(dir.resolve("relaunched.txt")).trim());
+        assertEquals("long|unset|unset|-q long.txt short.txt", Files.readString(dir.resolve("relaunched.txt")).trim());
         assertFalse(Files.exists(dir.resolve("long.png")) || Files.exists(dir.resolve("short.png")), "nothing rendered here");
         Files.delete(dir.resolve("relaunched.txt"));
         Result s = raytracer(null, env, null, "-q", "short.txt");
@@ -197,12 +198,13 @@ class CommandLineProcessTest {
     /**
      * A scene with large OBJ files is judged before they are read (JitPolicy.isLongBeforeFiles): the launcher
      * starts again before the parser reads the mesh (here a 17 MB file of zeros that no parse could accept),
-     * and a short render of the same mesh is not sent away.
+     * and a short render of the same mesh is not sent away. A large mesh gets the SIMD traversal
+     * (RAYTRACER_SIMD=1: this JDK has the Vector API's module).
      */
     @Test
     void longMeshRenderStartsTheLauncherAgainBeforeReadingTheObjFile() throws Exception {
         Path fake = dir.resolve("fake-launcher");
-        Files.writeString(fake, "#!/bin/sh\necho \"$RAYTRACER_JIT|$*\" > " + dir.resolve("relaunched.txt") + "\nexit 7\n");
+        Files.writeString(fake, "#!/bin/sh\necho \"$RAYTRACER_JIT|${RAYTRACER_SIMD-unset}|$*\" > " + dir.resolve("relaunched.txt") + "\nexit 7\n");
         assertTrue(fake.toFile().setExecutable(true));
         try (java.io.RandomAccessFile f = new java.io.RandomAccessFile(dir.resolve("big.obj").toFile(), "rw")) {
             f.setLength(17L << 20);   // sparse: never written, never read
@@ -215,7 +217,7 @@ class CommandLineProcessTest {
         Result r = raytracer(null, env, null, "-q", "mesh-long.txt");
         assertEquals(7, r.status(), r.err());
         assertEquals("", r.err(), "the OBJ file was not read");
-        assertEquals("long|-q mesh-long.txt", Files.readString(dir.resolve("relaunched.txt")).trim());
+        assertEquals("long|1|-q mesh-long.txt", Files.readString(dir.resolve("relaunched.txt")).trim());
         Files.delete(dir.resolve("relaunched.txt"));
         Result s = raytracer(null, env, null, "-q", "mesh-short.txt");
         assertTrue(s.err().contains("big.obj"), s.err());   // read here, and refused

@@ -1,0 +1,251 @@
+package ray.accel;
+
+import java.util.Arrays;
+import jdk.incubator.vector.DoubleVector;
+import jdk.incubator.vector.FloatVector;
+import jdk.incubator.vector.VectorMask;
+import jdk.incubator.vector.VectorOperators;
+import jdk.incubator.vector.VectorSpecies;
+import ray.IntersectionRecord;
+
+/**
+ * The BVH's binary tree collapsed into nodes of up to four children whose four boxes are tested together,
+ * in SIMD (the JDK's Vector API, {@code jdk.incubator.vector}): the traversal a long render under C2 runs
+ * over a large tree ({@link Bvh#wideWanted}). The class is loaded only where that module is in the
+ * boot layer; nothing else in the program refers to the Vector API.
+ *
+ * <p>Built from the binary tree ({@link Bvh#node}), not by a builder of its own: each node takes its binary
+ * node's two children, then, while it has fewer than four, replaces the inner child of largest surface area
+ * by that child's two children (Wald et al. 2008, Embree's BVH4 collapse). The leaves, their slots and so
+ * the primitives each leaf holds are the binary tree's. An unused lane has an empty box (+infinity to
+ * -infinity), which every ray misses.
+ *
+ * <p>The box test is the binary traversal's ({@link Bvh#slabs}), lane for lane: each float plane widened to
+ * the same double, minus the same origin, times the same inverse direction, the same NaN rule (a NaN slab
+ * distance leaves the interval as it was: {@code n > lo} is false for NaN, so the blend keeps {@code lo}),
+ * the same slack on the far end. So a box is entered exactly when the binary traversal would enter it over
+ * the same interval, every leaf that could hold a hit is reached, its primitives are tested with the same
+ * kernels, and since a closest hit's tie rule does not depend on the order of tests ({@link RayQuery#offer}),
+ * every answer (hit or not, t, which primitive, the record filled) is the binary traversal's.
+ * {@code Wide4Test} checks that on seeded random scenes and rays.
+ *
+ * <p>Children entered are visited nearest first (their entry distances sorted, at most four); the
+ * closest-hit query keeps the others with their distances and drops those a closer hit has passed, as
+ * the binary traversal does.
+ *
+ * <p>Memory: per node 24 floats of boxes and 4 child references, 112 bytes, twice a binary node's, for
+ * about half as many nodes (a node over leaves is often filled with two or three children): about what
+ * the binary nodes took, whose array the BVH then drops (mesh1m 60.9 bytes a triangle with its mesh,
+ * against 60.7; {@code Wide4Test}'s scenes within 2%).
+ */
+final class Wide4 {
+
+    private static final VectorSpecies<Float> F = FloatVector.SPECIES_128;
+    private static final VectorSpecies<Double> D = DoubleVector.SPECIES_256;
+    private static final DoubleVector INFINITE = DoubleVector.broadcast(D, Double.POSITIVE_INFINITY);
+    /** Floats per node: min x, min y, min z, max x, max y, max z, four lanes each. */
+    static final int NODE = 24;
+    /**
+     * Stack entries a query may need: a node pushes at most three children, and a path visits at most
+     * one wide node per binary level, whose depth the builder bounds ({@link BvhBuilder#SAH_DEPTH} SAH
+     * levels, then median splits of at most 31 levels).
+     */
+    static final int STACK = 3 * (BvhBuilder.SAH_DEPTH + 32);
+
+    /** Per node: {@link #NODE} floats of its children's boxes, structure of arrays. */
+    final float[] box;
+    /** Per node: its four children's references (node index, or a leaf's {@code ~(first slot << 4 | count)}). */
+    final int[] child;
+    final int root;
+    private int count;
+
+    /** Collapses the binary tree {@code node} ({@link Bvh#NODE} floats a node) under its inner root. */
+    Wide4(float[] node, int binaryRoot, int binaryNodes) {
+        float[] b = new float[NODE * binaryNodes];
+        int[] c = new int[4 * binaryNodes];
+        root = collapse(node, binaryRoot, b, c);
+        box = Arrays.copyOf(b, NODE * count);
+        child = Arrays.copyOf(c, 4 * count);
+    }
+
+    private static double area(float[] b, int o) {
+        double x = (double) b[o + 3] - b[o], y = (double) b[o + 4] - b[o + 1], z = (double) b[o + 5] - b[o + 2];
+        return x * y + y * z + z * x;
+    }
+
+    /** Makes the wide node of binary node {@code bin} and, depth first, its inner children's; returns its index. */
+    private int collapse(float[] node, int bin, float[] outBox, int[] outChild) {
+        float[] kb = new float[24];
+        int[] kr = new int[4];
+        int o = Bvh.NODE * bin;
+        System.arraycopy(node, o, kb, 0, 12);
+        kr[0] = Float.floatToRawIntBits(node[o + 12]);
+        kr[1] = Float.floatToRawIntBits(node[o + 13]);
+        int k = 2;
+        while (k < 4) {
+            int open = -1;
+            double largest = -1;
+            for (int i = 0; i < k; i++) {
+                if (kr[i] >= 0) {
+                    double a = area(kb, 6 * i);
+                    if (a > largest) {
+                        largest = a;
+                        open = i;
+                    }
+                }
+            }
+            if (open < 0) {
+                break;   // every child a leaf
+            }
+            int p = Bvh.NODE * kr[open];
+            System.arraycopy(node, p, kb, 6 * open, 6);
+            System.arraycopy(node, p + 6, kb, 6 * k, 6);
+            kr[open] = Float.floatToRawIntBits(node[p + 12]);
+            kr[k] = Float.floatToRawIntBits(node[p + 13]);
+            k++;
+        }
+        int w = count++;
+        for (int lane = 0; lane < 4; lane++) {
+            for (int a = 0; a < 6; a++) {
+                outBox[NODE * w + 4 * a + lane] = lane < k ? kb[6 * lane + a]
+                        : a < 3 ? Float.POSITIVE_INFINITY : Float.NEGATIVE_INFINITY;
+            }
+            outChild[4 * w + lane] = ~0;   // an empty leaf, never entered (its box is empty)
+        }
+        for (int lane = 0; lane < k; lane++) {
+            outChild[4 * w + lane] = kr[lane] >= 0 ? collapse(node, kr[lane], outBox, outChild) : kr[lane];
+        }
+        return w;
+    }
+
+    long memoryBytes() {
+        return 4L * box.length + 4L * child.length;
+    }
+
+    /** Four planes of one kind (say min x) widened to doubles. */
+    private static DoubleVector planes(float[] b, int o) {
+        return (DoubleVector) FloatVector.fromArray(F, b, o).convertShape(VectorOperators.F2D, D, 0);
+    }
+
+    /**
+     * The four children's entry distances into {@code d[0..3]} (+infinity for a box the ray misses over
+     * [lo, hi]); returns whether any is entered. The offsets pick each axis's near and far planes by the
+     * direction's sign, as {@link Bvh#slabs} does.
+     */
+    private static boolean enter(float[] b, int o, int nx, int fx, int ny, int fy, int nz, int fz,
+                                 DoubleVector ox, DoubleVector oy, DoubleVector oz,
+                                 DoubleVector ix, DoubleVector iy, DoubleVector iz, DoubleVector lo, DoubleVector hi, double[] d) {
+        DoubleVector n = planes(b, o + nx).sub(ox).mul(ix), f = planes(b, o + fx).sub(ox).mul(ix);
+        lo = lo.blend(n, n.compare(VectorOperators.GT, lo));
+        hi = hi.blend(f, f.compare(VectorOperators.LT, hi));
+        n = planes(b, o + ny).sub(oy).mul(iy);
+        f = planes(b, o + fy).sub(oy).mul(iy);
+        lo = lo.blend(n, n.compare(VectorOperators.GT, lo));
+        hi = hi.blend(f, f.compare(VectorOperators.LT, hi));
+        n = planes(b, o + nz).sub(oz).mul(iz);
+        f = planes(b, o + fz).sub(oz).mul(iz);
+        lo = lo.blend(n, n.compare(VectorOperators.GT, lo));
+        hi = hi.blend(f, f.compare(VectorOperators.LT, hi));
+        VectorMask<Double> in = lo.compare(VectorOperators.LE, hi.mul(Bvh.SLAB_SLACK));
+        if (!in.anyTrue()) {
+            return false;
+        }
+        INFINITE.blend(lo, in).intoArray(d, 0);
+        return true;
+    }
+
+    /**
+     * Sorts the entered children of node {@code w} (distance in {@code d[0..3]}) nearest first into
+     * {@code d[4..]} and {@code ref}; returns how many.
+     */
+    private int sortEntered(int w, double[] d, int[] ref) {
+        int c = 0;
+        for (int i = 0; i < 4; i++) {
+            double t = d[i];
+            if (t <= Double.MAX_VALUE) {
+                int r = child[4 * w + i], j = c++;
+                while (j > 0 && d[3 + j] > t) {
+                    d[4 + j] = d[3 + j];
+                    ref[j] = ref[j - 1];
+                    j--;
+                }
+                d[4 + j] = t;
+                ref[j] = r;
+            }
+        }
+        return c;
+    }
+
+    /** {@link Bvh#anyHit(ray.Ray, ray.TraceContext, int)}'s traversal from the root, the query set up. */
+    boolean anyHit(Bvh bvh, RayQuery q, int slot, boolean cache, double ix, double iy, double iz) {
+        DoubleVector vox = DoubleVector.broadcast(D, q.ox), voy = DoubleVector.broadcast(D, q.oy), voz = DoubleVector.broadcast(D, q.oz);
+        DoubleVector vix = DoubleVector.broadcast(D, ix), viy = DoubleVector.broadcast(D, iy), viz = DoubleVector.broadcast(D, iz);
+        DoubleVector lo = DoubleVector.broadcast(D, q.tMin), hi = DoubleVector.broadcast(D, q.tMax);
+        int nx = ix < 0 ? 12 : 0, ny = iy < 0 ? 16 : 4, nz = iz < 0 ? 20 : 8;
+        float[] b = box;
+        double[] d = q.wideT;
+        int[] entered = q.wideRef, stack = q.stack;
+        int sp = 0, ref = root;
+        while (true) {
+            if (ref >= 0) {
+                if (Bvh.COUNT) {
+                    q.nodeVisits++;
+                }
+                if (enter(b, NODE * ref, nx, nx ^ 12, ny, ny ^ 20, nz, nz ^ 28, vox, voy, voz, vix, viy, viz, lo, hi, d)) {
+                    int c = sortEntered(ref, d, entered);
+                    for (int j = c - 1; j > 0; j--) {
+                        stack[sp++] = entered[j];
+                    }
+                    ref = entered[0];
+                    continue;
+                }
+            } else if (bvh.hit(~ref, q, slot, cache)) {
+                return true;
+            }
+            if (sp == 0) {
+                if (cache) {
+                    q.occluderSet[slot] = -1;   // unshadowed: the next ray of this slot traverses at once
+                }
+                return false;
+            }
+            ref = stack[--sp];
+        }
+    }
+
+    /** {@link Bvh#closestHit}'s traversal from the root, the query set up; fills {@code rec}. */
+    boolean closestHit(Bvh bvh, RayQuery q, IntersectionRecord rec, double ix, double iy, double iz) {
+        DoubleVector vox = DoubleVector.broadcast(D, q.ox), voy = DoubleVector.broadcast(D, q.oy), voz = DoubleVector.broadcast(D, q.oz);
+        DoubleVector vix = DoubleVector.broadcast(D, ix), viy = DoubleVector.broadcast(D, iy), viz = DoubleVector.broadcast(D, iz);
+        DoubleVector lo = DoubleVector.broadcast(D, q.tMin);
+        int nx = ix < 0 ? 12 : 0, ny = iy < 0 ? 16 : 4, nz = iz < 0 ? 20 : 8;
+        float[] b = box;
+        double[] d = q.wideT, stackT = q.stackT;
+        int[] entered = q.wideRef, stack = q.stack;
+        int sp = 0, ref = root;
+        while (true) {
+            if (ref >= 0) {
+                if (Bvh.COUNT) {
+                    q.nodeVisits++;
+                }
+                DoubleVector hi = DoubleVector.broadcast(D, q.tMax);
+                if (enter(b, NODE * ref, nx, nx ^ 12, ny, ny ^ 20, nz, nz ^ 28, vox, voy, voz, vix, viy, viz, lo, hi, d)) {
+                    int c = sortEntered(ref, d, entered);
+                    for (int j = c - 1; j > 0; j--) {
+                        stack[sp] = entered[j];
+                        stackT[sp++] = d[4 + j];
+                    }
+                    ref = entered[0];
+                    continue;
+                }
+            } else {
+                bvh.hit(~ref, q);
+            }
+            do {
+                if (sp == 0) {
+                    return Bvh.finish(q, rec);
+                }
+                ref = stack[--sp];
+            } while (stackT[sp] > q.tMax * Bvh.SLAB_SLACK);
+        }
+    }
+}
