@@ -191,7 +191,7 @@ class BvhPacketTest {
     }
 
     /** True when another surface than the one reported is hit at the same t (a tie the slot decided). */
-    private static boolean tieAt(List<Surface> all, Ray ray, IntersectionRecord best) {
+    static boolean tieAt(List<Surface> all, Ray ray, IntersectionRecord best) {
         IntersectionRecord rec = new IntersectionRecord();
         for (Surface s : all) {
             Ray r = new Ray(ray.origin, ray.direction);

@@ -102,7 +102,7 @@ class Wide4Test {
                     assertSameBits(rb.location, rw.location, what);
                     assertSameBits(rb.normal, rw.normal, what);
                     assertEquals(Double.doubleToRawLongBits(rb.error), Double.doubleToRawLongBits(rw.error), what);
-                    if (tieAt(all, ray, rb)) {
+                    if (BvhPacketTest.tieAt(all, ray, rb)) {
                         ties++;
                     }
                 }
@@ -123,20 +123,6 @@ class Wide4Test {
         assertEquals(Double.doubleToRawLongBits(a.x), Double.doubleToRawLongBits(b.x), what);
         assertEquals(Double.doubleToRawLongBits(a.y), Double.doubleToRawLongBits(b.y), what);
         assertEquals(Double.doubleToRawLongBits(a.z), Double.doubleToRawLongBits(b.z), what);
-    }
-
-    /** True when another surface than the one reported is hit at the same t (a tie the slot decided). */
-    private static boolean tieAt(List<Surface> all, Ray ray, IntersectionRecord best) {
-        IntersectionRecord rec = new IntersectionRecord();
-        for (Surface s : all) {
-            Ray r = new Ray(ray.origin, ray.direction);
-            r.tMin = ray.tMin;
-            r.tMax = ray.tMax;
-            if (s != best.surface && !s.isDegenerate() && s.intersects(r, rec, null) && rec.t == best.t) {
-                return true;
-            }
-        }
-        return false;
     }
 
     /** A tree below the threshold, or without the property, stays binary; so does a one-leaf tree. */
