@@ -99,6 +99,8 @@ done
 # Whether stderr and stdout are terminals (the progress bar goes to stderr only when it is one; Java's
 # System.console() asks about stdin and stdout together). `[` is a shell builtin: no process start.
 if [ -t 2 ]; then tty2=true; else tty2=false; fi
+# (a long render started by the JIT policy through a pipe that filters its stderr: the first process's answer)
+case ${RAYTRACER_STDERR_TTY-} in true|false) tty2=$RAYTRACER_STDERR_TTY ;; esac
 if [ -t 1 ]; then tty1=true; else tty1=false; fi
 
 # The java command line, built last argument first. Nothing taken from a path (the installation's
@@ -153,29 +155,18 @@ case "${LC_ALL:-${LC_CTYPE:-$LANG}}" in
     *) LC_ALL=C.UTF-8; export LC_ALL ;;
 esac
 
+# A long render with RAYTRACER_SIMD=1 (the JIT policy sets it for a large scene where the JDK has the
+# module) traverses its tree four boxes at a time through the JDK's Vector API (ray.accel.Wide4; mesh1m
+# 0.90x the CPU time, docs/performance.md, "A 4-wide BVH in SIMD"). The API is an incubator module in JDK
+# 17-25, which the JVM announces on stderr at every start; the JIT policy, which started this script, drops
+# that line (and tells whether its own stderr is a terminal: RAYTRACER_STDERR_TTY, above). Wide4's box test
+# is inlined whatever C2's size heuristics say: a vector passed to a call that is not inlined is an object
+# on the heap (mesh1m's peak RSS was 2 GiB without it).
+if [ "${RAYTRACER_JIT-}" = long ] && [ "${RAYTRACER_SIMD-}" = 1 ]; then
+    set -- --add-modules=jdk.incubator.vector -Dray.bvh.wide=true -XX:CompileCommand=inline,ray.accel.Wide4::* "$@"
+fi
+
 # The build's own JVM options: a constant the build writes here (quoted words, no path in it).
 eval "set -- $DEFAULT_JVM_OPTS \"\$@\""
 
-# A long render with RAYTRACER_SIMD=1 (the JIT policy sets it where the JDK has the module) traverses large
-# trees four boxes at a time through the JDK's Vector API (ray.accel.Wide4; mesh1m 0.94x the CPU time,
-# docs/performance.md). The API is an incubator module in JDK 17-25, and the JVM announces it on stderr at
-# every start; that one line is dropped, and the rest of stderr passes through byte for byte as it is
-# written (the progress line too: whether stderr is a terminal was decided above). The exit status is the
-# JVM's. Without RAYTRACER_SIMD=1 the JVM replaces this shell, as always.
-if [ "${RAYTRACER_JIT-}" = long ] && [ "${RAYTRACER_SIMD-}" = 1 ]; then
-    # Wide4's box test is inlined into both traversals whatever C2's size heuristics say: a vector passed
-    # to a call that is not inlined is an object on the heap (mesh1m allocated 2 GiB without this).
-    set -- --add-modules=jdk.incubator.vector -Dray.bvh.wide=true -XX:CompileCommand=inline,ray.accel.Wide4::* "$@"
-    drop_incubator_notice() {
-        if IFS= read -r line; then
-            [ "$line" = "WARNING: Using incubator modules: jdk.incubator.vector" ] || printf '%s\n' "$line"
-        else
-            printf '%s' "$line"
-        fi
-        exec cat
-    }
-    exec 3>&1
-    status=$( { { "$JAVACMD" "$@" 2>&1 1>&3 3>&- 4>&-; echo $? >&4; } | drop_incubator_notice >&2 3>&- 4>&-; } 4>&1 )
-    exit "$status"
-fi
 exec "$JAVACMD" "$@"

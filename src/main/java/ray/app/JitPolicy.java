@@ -174,9 +174,10 @@ final class JitPolicy {
     }
 
     /**
-     * Runs {@code launcher args} with {@code RAYTRACER_JIT=long} (and {@link #SIMD} where {@code wide}),
-     * this process's standard streams passed through, and returns its exit status; -1 when it could not be started (the caller renders here).
-     * A shutdown hook ends the child if this process is stopped first.
+     * Runs {@code launcher args} with {@code RAYTRACER_JIT=long} (and {@link #SIMD} where {@code wide}
+     * and the module is there), this process's standard streams passed through (stderr through a
+     * {@link NoticeFilter} when the module is added), and returns its exit status; -1 when it could not be
+     * started (the caller renders here). A shutdown hook ends the child if this process is stopped first.
      */
     static int relaunch(String launcher, String[] args, boolean wide) {
         List<String> cmd = new ArrayList<>(args.length + 1);
@@ -185,8 +186,11 @@ final class JitPolicy {
         ProcessBuilder pb = new ProcessBuilder(cmd).inheritIO();
         pb.environment().put("RAYTRACER_JIT", "long");
         pb.environment().remove(RELAUNCH);
-        if (wide && !pb.environment().containsKey(SIMD) && vectorModule()) {
+        boolean simd = wide && !pb.environment().containsKey(SIMD) && vectorModule();
+        if (simd) {
             pb.environment().put(SIMD, "1");
+            pb.redirectError(ProcessBuilder.Redirect.PIPE);   // through NoticeFilter
+            pb.environment().put("RAYTRACER_STDERR_TTY", Terminal.stderr() ? "true" : "false");
         }
         Process p;
         try {
@@ -194,12 +198,20 @@ final class JitPolicy {
         } catch (IOException | RuntimeException e) {
             return -1;
         }
+        NoticeFilter filter = simd ? new NoticeFilter(p.getErrorStream()) : null;
+        if (filter != null) {
+            filter.start();
+        }
         Thread stop = new Thread(p::destroy, "raytracer-relaunch-stop");
         Runtime.getRuntime().addShutdownHook(stop);
         try {
             while (true) {
                 try {
-                    return p.waitFor();
+                    int status = p.waitFor();
+                    if (filter != null) {
+                        filter.join();   // the child's last words are on this stderr before this process ends
+                    }
+                    return status;
                 } catch (InterruptedException e) {
                     p.destroy();   // this thread was asked to stop: so is the render it waits for
                 }
@@ -209,6 +221,61 @@ final class JitPolicy {
                 Runtime.getRuntime().removeShutdownHook(stop);
             } catch (IllegalStateException e) {
                 // already shutting down: the hook runs
+            }
+        }
+    }
+
+    /**
+     * Copies a long render's stderr to this process's own, byte for byte as it comes (the progress line
+     * included), but for the JVM's notice of the incubator module ({@link #NOTICE}) when it is the first
+     * line: the launcher adds the module for the wide traversal ({@link #SIMD}), and the notice says
+     * nothing a user should act on.
+     */
+    static final class NoticeFilter extends Thread {
+        /** What the JVM prints first when the module is added ({@code ModuleBootstrap}, JDK 17-25). */
+        static final byte[] NOTICE = "WARNING: Using incubator modules: jdk.incubator.vector\n"
+                .getBytes(java.nio.charset.StandardCharsets.US_ASCII);
+        private final java.io.InputStream in;
+        private final java.io.OutputStream out;
+
+        NoticeFilter(java.io.InputStream in) {
+            this(in, new java.io.FileOutputStream(java.io.FileDescriptor.err));
+        }
+
+        NoticeFilter(java.io.InputStream in, java.io.OutputStream out) {
+            super("raytracer-stderr");
+            setDaemon(true);
+            this.in = in;
+            this.out = out;
+        }
+
+        @Override
+        public void run() {
+            byte[] buf = new byte[8192];
+            int matched = 0;   // bytes of the notice read so far; -1 once decided
+            try {
+                for (int n; (n = in.read(buf)) > 0; ) {
+                    int from = 0;
+                    while (matched >= 0 && from < n) {
+                        if (buf[from] == NOTICE[matched]) {
+                            from++;
+                            if (++matched == NOTICE.length) {
+                                matched = -1;   // the notice, whole: dropped
+                            }
+                        } else {
+                            out.write(NOTICE, 0, matched);   // not the notice: what was held back, then the rest
+                            matched = -1;
+                        }
+                    }
+                    out.write(buf, from, n - from);
+                    out.flush();
+                }
+                if (matched > 0) {
+                    out.write(NOTICE, 0, matched);
+                }
+                out.flush();
+            } catch (IOException e) {
+                // this process's stderr closed, or the child's: nothing more to pass on
             }
         }
     }

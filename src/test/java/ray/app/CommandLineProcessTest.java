@@ -199,12 +199,15 @@ class CommandLineProcessTest {
      * A scene with large OBJ files is judged before they are read (JitPolicy.isLongBeforeFiles): the launcher
      * starts again before the parser reads the mesh (here a 17 MB file of zeros that no parse could accept),
      * and a short render of the same mesh is not sent away. A large mesh gets the SIMD traversal
-     * (RAYTRACER_SIMD=1: this JDK has the Vector API's module).
+     * (RAYTRACER_SIMD=1: this JDK has the Vector API's module); the render's stderr then comes through a
+     * pipe that drops the JVM's notice of the module, and the launcher is told that this stderr is not a
+     * terminal (RAYTRACER_STDERR_TTY).
      */
     @Test
     void longMeshRenderStartsTheLauncherAgainBeforeReadingTheObjFile() throws Exception {
         Path fake = dir.resolve("fake-launcher");
-        Files.writeString(fake, "#!/bin/sh\necho \"$RAYTRACER_JIT|${RAYTRACER_SIMD-unset}|$*\" > " + dir.resolve("relaunched.txt") + "\nexit 7\n");
+        Files.writeString(fake, "#!/bin/sh\necho \"$RAYTRACER_JIT|${RAYTRACER_SIMD-unset}|${RAYTRACER_STDERR_TTY-unset}|$*\" > "
+                + dir.resolve("relaunched.txt") + "\nprintf 'WARNING: Using incubator modules: jdk.incubator.vector\\nfrom the render\\n' >&2\nexit 7\n");
         assertTrue(fake.toFile().setExecutable(true));
         try (java.io.RandomAccessFile f = new java.io.RandomAccessFile(dir.resolve("big.obj").toFile(), "rw")) {
             f.setLength(17L << 20);   // sparse: never written, never read
@@ -216,8 +219,8 @@ class CommandLineProcessTest {
         Map<String, String> env = Map.of("RAYTRACER_RELAUNCH", fake.toString());
         Result r = raytracer(null, env, null, "-q", "mesh-long.txt");
         assertEquals(7, r.status(), r.err());
-        assertEquals("", r.err(), "the OBJ file was not read");
-        assertEquals("long|1|-q mesh-long.txt", Files.readString(dir.resolve("relaunched.txt")).trim());
+        assertEquals("from the render\n", r.err(), "the OBJ file was not read; the JVM's notice of the module dropped");
+        assertEquals("long|1|false|-q mesh-long.txt", Files.readString(dir.resolve("relaunched.txt")).trim());
         Files.delete(dir.resolve("relaunched.txt"));
         Result s = raytracer(null, env, null, "-q", "mesh-short.txt");
         assertTrue(s.err().contains("big.obj"), s.err());   // read here, and refused
