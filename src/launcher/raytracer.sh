@@ -168,5 +168,4 @@ fi
 
 # The build's own JVM options: a constant the build writes here (quoted words, no path in it).
 eval "set -- $DEFAULT_JVM_OPTS \"\$@\""
-
 exec "$JAVACMD" "$@"

@@ -60,7 +60,8 @@ public final class Bvh implements Accelerator {
      * and the module {@code jdk.incubator.vector} in the boot layer. Short renders run C1, where the
      * Vector API is many times slower than scalar code; they never ask.
      */
-    static final boolean WIDE = Boolean.getBoolean("ray.bvh.wide") && ModuleLayer.boot().findModule("jdk.incubator.vector").isPresent();
+    static final boolean WIDE = Boolean.getBoolean("ray.bvh.wide")
+            && ModuleLayer.boot().findModule("jdk.incubator.vector").isPresent();
     /**
      * Inner nodes from which a tree is traversed wide when {@link #WIDE}: a small tree (classic's five
      * primitives) is one or two binary nodes, and there the wide traversal's set-up costs more than it saves.
@@ -291,7 +292,8 @@ public final class Bvh implements Accelerator {
 
     /** Bytes held by the tree and its packed primitives (not the scene's Surface objects). */
     public long memoryBytes() {
-        long m = (wide != null ? wide.memoryBytes() : 4L * node.length) + (slotRun == null ? 0 : 4L * slotRun.length + 4L * slotIndex.length);
+        long m = (wide != null ? wide.memoryBytes() : 4L * node.length)
+                + (slotRun == null ? 0 : 4L * slotRun.length + 4L * slotIndex.length);
         for (PrimitiveSet s : sets) {
             m += s.memoryBytes();
         }
@@ -403,10 +405,6 @@ public final class Bvh implements Accelerator {
      * it loaded once per query ({@link #onlySet}, {@link #slotRun}, {@link #slotIndex}, {@link #sets}),
      * which C1 would otherwise load again at every leaf.
      */
-    void hit(int leaf, RayQuery q) {
-        hit(leaf, q, onlySet, slotRun, slotIndex, sets);
-    }
-
     private static void hit(int leaf, RayQuery q, PrimitiveSet one, int[] run, int[] index, PrimitiveSet[] ps) {
         int first = leaf >>> 4, end = first + (leaf & 15);
         if (COUNT) {
@@ -421,6 +419,11 @@ public final class Bvh implements Accelerator {
                 i += len;
             }
         }
+    }
+
+    /** {@link #hit(int, RayQuery, PrimitiveSet, int[], int[], PrimitiveSet[])} with this tree's sets ({@link Wide4}). */
+    void hit(int leaf, RayQuery q) {
+        hit(leaf, q, onlySet, slotRun, slotIndex, sets);
     }
 
     /** Inner nodes from which camera rays are traced in packets ({@link #packetsPay}). */
@@ -681,7 +684,7 @@ public final class Bvh implements Accelerator {
         return false;
     }
 
-    /** {@link #hit(int, RayQuery, int, boolean, PrimitiveSet, int[], int[], PrimitiveSet[])} with this tree's sets. */
+    /** The any-hit {@code hit} with this tree's sets ({@link Wide4}). */
     boolean hit(int leaf, RayQuery q, int slot, boolean cache) {
         return hit(leaf, q, slot, cache, onlySet, slotRun, slotIndex, sets);
     }

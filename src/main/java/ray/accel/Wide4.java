@@ -11,7 +11,7 @@ import ray.IntersectionRecord;
 /**
  * The BVH's binary tree collapsed into nodes of up to four children whose four boxes are tested together,
  * in SIMD (the JDK's Vector API, {@code jdk.incubator.vector}): the traversal a long render under C2 runs
- * over a large tree ({@link Bvh#wideWanted}). The class is loaded only where that module is in the
+ * over a large tree ({@link Bvh#WIDE}). The class is loaded only where that module is in the
  * boot layer; nothing else in the program refers to the Vector API.
  *
  * <p>Built from the binary tree ({@link Bvh#node}), not by a builder of its own: each node takes its binary

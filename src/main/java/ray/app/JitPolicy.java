@@ -24,7 +24,8 @@ import ray.plan.RenderPlan;
  * that process's exit status. Nothing has been printed or written by then; the cost is one more JVM start
  * and a second parse of the first scene (a few percent of a long render). A scene with large OBJ meshes is
  * judged before they are read ({@link #isLongBeforeFiles}, told by the parser through
- * {@link BeforeMeshes}), so that a long mesh render does not read its files twice.
+ * {@link BeforeMeshes}), so that a long mesh render does not read its files twice. A long render of a large
+ * scene also gets the JDK's Vector API, for the BVH's SIMD traversal ({@link #SIMD}).
  */
 final class JitPolicy {
 
@@ -186,9 +187,11 @@ final class JitPolicy {
         ProcessBuilder pb = new ProcessBuilder(cmd).inheritIO();
         pb.environment().put("RAYTRACER_JIT", "long");
         pb.environment().remove(RELAUNCH);
-        boolean simd = wide && !pb.environment().containsKey(SIMD) && vectorModule();
-        if (simd) {
+        if (wide && !pb.environment().containsKey(SIMD) && vectorModule()) {
             pb.environment().put(SIMD, "1");
+        }
+        boolean simd = "1".equals(pb.environment().get(SIMD));   // ours, or the user's own
+        if (simd) {
             pb.redirectError(ProcessBuilder.Redirect.PIPE);   // through NoticeFilter
             pb.environment().put("RAYTRACER_STDERR_TTY", Terminal.stderr() ? "true" : "false");
         }
