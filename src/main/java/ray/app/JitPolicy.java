@@ -144,9 +144,10 @@ final class JitPolicy {
     }
 
     /**
-     * Set to 1 in a long render's environment when its scene is large ({@link #wantsWide}) and this JDK
-     * has the Vector API's module: the launcher then adds the module, and the tree is traversed four boxes
-     * at a time ({@code ray.accel.Wide4}). A value the user set (0: never) is left as it is.
+     * Set to 1 in a long render's environment when its scene is large ({@link #wantsWide}) and the SIMD
+     * traversal pays on this JDK ({@link #simdPays}): the launcher then adds the Vector API's module, and
+     * the tree is traversed four boxes at a time ({@code ray.accel.Wide4}). A value the user set (0:
+     * never, 1: on any JDK that has the module) is left as it is.
      */
     static final String SIMD = "RAYTRACER_SIMD";
     /**
@@ -165,8 +166,20 @@ final class JitPolicy {
         return n >= WIDE_PRIMITIVES;
     }
 
-    /** Whether this JDK's own modules include {@code jdk.incubator.vector} (not added to this JVM). */
-    static boolean vectorModule() {
+    /** The JDK release on which the SIMD traversal was measured to pay (mesh1m 0.90x the CPU time). */
+    static final int SIMD_JDK = 17;
+
+    /**
+     * Whether a long render on this JDK gets the SIMD traversal: the JDK the render's JVM runs is this
+     * one (the same launcher, the same JAVA_HOME), and it must be {@link #SIMD_JDK} with
+     * {@code jdk.incubator.vector} among its own modules. On JDK 25 it was measured not to pay (mesh1m
+     * 1.10x the CPU time: C2's scalar traversal there is faster, and the vector code's warm-up dearer);
+     * the releases between were not measured. {@code RAYTRACER_SIMD=1} asks for it on any JDK.
+     */
+    static boolean simdPays() {
+        if (Runtime.version().feature() != SIMD_JDK) {
+            return false;
+        }
         try {
             return java.lang.module.ModuleFinder.ofSystem().find("jdk.incubator.vector").isPresent();
         } catch (RuntimeException e) {
@@ -187,7 +200,7 @@ final class JitPolicy {
         ProcessBuilder pb = new ProcessBuilder(cmd).inheritIO();
         pb.environment().put("RAYTRACER_JIT", "long");
         pb.environment().remove(RELAUNCH);
-        if (wide && !pb.environment().containsKey(SIMD) && vectorModule()) {
+        if (wide && !pb.environment().containsKey(SIMD) && simdPays()) {
             pb.environment().put(SIMD, "1");
         }
         boolean simd = "1".equals(pb.environment().get(SIMD));   // ours, or the user's own
