@@ -431,7 +431,7 @@ public final class Bvh implements Accelerator {
 
     @Override
     public boolean packetsPay() {
-        return wide == null && nodeCount >= PACKET_NODES;
+        return nodeCount >= PACKET_NODES;
     }
 
     /**
@@ -452,8 +452,8 @@ public final class Bvh implements Accelerator {
     public void closestHits(RayPacket p, TraceContext ctx) {
         int n = p.size;
         RayQuery q = query(ctx);
-        if (n < 2 || root < 0 || wide != null) {
-            Accelerator.super.closestHits(p, ctx);   // ray by ray (a wide tree's single-ray traversal beats the binary packets)
+        if (n < 2 || root < 0) {
+            Accelerator.super.closestHits(p, ctx);   // ray by ray
             return;
         }
         RayQuery[] lanes = q.lanes(n);
@@ -493,6 +493,13 @@ public final class Bvh implements Accelerator {
                 unbounded.closestHit(0, unbounded.size(), Integer.MAX_VALUE, l);
             }
             far = Math.max(far, l.tMax);
+        }
+        if (wide != null) {
+            wide.closestHits(this, q, lanes, n, ox, oy, oz, tMin, ixLo, ixHi, iyLo, iyHi, izLo, izHi, far);
+            for (int k = 0; k < n; k++) {
+                p.hit[k] = finish(lanes[k], p.records[k]);
+            }
+            return;
         }
         float[] nb = node;
         int[] run = slotRun, index = slotIndex;
@@ -778,7 +785,7 @@ public final class Bvh implements Accelerator {
      * near one); a NaN slab distance (origin on the plane, direction parallel) leaves the interval as it
      * was: conservative. The one box test of the BVH (the launcher lets C1 inline it).
      */
-    private static double slabs(float[] b, int o, boolean sx, boolean sy, boolean sz,
+    static double slabs(float[] b, int o, boolean sx, boolean sy, boolean sz,
                                 double ox, double oy, double oz, double ix, double iy, double iz,
                                 double tMin, double tMax) {
         double lo = tMin, hi = tMax, n, f;

@@ -46,9 +46,11 @@ public final class RayQuery {
     /** Traversal stack of node references, and (closest hit) their entry distances. */
     final int[] stack = new int[Wide4.STACK];
     final double[] stackT = new double[Wide4.STACK];
-    /** A wide node's four entry distances, then the entered ones sorted, and their references ({@link Wide4}). */
+    /** A wide node's four entry distances, then the entered ones sorted, and their lanes ({@link Wide4}). */
     final double[] wideT = new double[8];
     final int[] wideRef = new int[4];
+    /** A leaf's box gathered from its wide node for a packet's rays ({@link Wide4#closestHits}). */
+    final float[] wideBox = new float[6];
     /**
      * A packet's traversal ({@link Bvh#closestHits}): per pending subtree its box's offset in the node
      * array; per ray of the packet its own query and its inverse direction. Made on the first packet.

@@ -31,7 +31,8 @@ import ray.IntersectionRecord;
  *
  * <p>Children entered are visited nearest first (their entry distances sorted, at most four); the
  * closest-hit query keeps the others with their distances and drops those a closer hit has passed, as
- * the binary traversal does.
+ * the binary traversal does. Camera packets have their own traversal ({@link #closestHits}), as in
+ * {@link Bvh}.
  *
  * <p>Memory: per node 24 floats of boxes and 4 child references, 112 bytes, twice a binary node's, for
  * about half as many nodes (a node over leaves is often filled with two or three children): about what
@@ -155,22 +156,56 @@ final class Wide4 {
     }
 
     /**
-     * Sorts the entered children of node {@code w} (distance in {@code d[0..3]}) nearest first into
-     * {@code d[4..]} and {@code ref}; returns how many.
+     * The packet's {@link #enter}: the four children's entry distances over the range of the packet's
+     * inverse directions, as {@link Bvh}'s packet test ({@code a >= 0 ? a * lo : a * hi} per plane: the
+     * rounded products are monotonic in the inverse, so the interval holds every ray's).
      */
-    private int sortEntered(int w, double[] d, int[] ref) {
+    private static boolean enter(float[] b, int o, int nx, int fx, int ny, int fy, int nz, int fz,
+                                 DoubleVector ox, DoubleVector oy, DoubleVector oz, DoubleVector ixLo, DoubleVector ixHi,
+                                 DoubleVector iyLo, DoubleVector iyHi, DoubleVector izLo, DoubleVector izHi,
+                                 DoubleVector lo, DoubleVector hi, double[] d) {
+        DoubleVector a = planes(b, o + nx).sub(ox), c = planes(b, o + fx).sub(ox);
+        DoubleVector n = a.mul(ixHi).blend(a.mul(ixLo), a.compare(VectorOperators.GE, 0));
+        DoubleVector f = c.mul(ixLo).blend(c.mul(ixHi), c.compare(VectorOperators.GE, 0));
+        lo = lo.blend(n, n.compare(VectorOperators.GT, lo));
+        hi = hi.blend(f, f.compare(VectorOperators.LT, hi));
+        a = planes(b, o + ny).sub(oy);
+        c = planes(b, o + fy).sub(oy);
+        n = a.mul(iyHi).blend(a.mul(iyLo), a.compare(VectorOperators.GE, 0));
+        f = c.mul(iyLo).blend(c.mul(iyHi), c.compare(VectorOperators.GE, 0));
+        lo = lo.blend(n, n.compare(VectorOperators.GT, lo));
+        hi = hi.blend(f, f.compare(VectorOperators.LT, hi));
+        a = planes(b, o + nz).sub(oz);
+        c = planes(b, o + fz).sub(oz);
+        n = a.mul(izHi).blend(a.mul(izLo), a.compare(VectorOperators.GE, 0));
+        f = c.mul(izLo).blend(c.mul(izHi), c.compare(VectorOperators.GE, 0));
+        lo = lo.blend(n, n.compare(VectorOperators.GT, lo));
+        hi = hi.blend(f, f.compare(VectorOperators.LT, hi));
+        VectorMask<Double> in = lo.compare(VectorOperators.LE, hi.mul(Bvh.SLAB_SLACK));
+        if (!in.anyTrue()) {
+            return false;
+        }
+        INFINITE.blend(lo, in).intoArray(d, 0);
+        return true;
+    }
+
+    /**
+     * Sorts the entered children (distance in {@code d[0..3]}) nearest first: their distances into
+     * {@code d[4..]}, their lanes into {@code lane}; returns how many.
+     */
+    private static int sortEntered(double[] d, int[] lane) {
         int c = 0;
         for (int i = 0; i < 4; i++) {
             double t = d[i];
             if (t <= Double.MAX_VALUE) {
-                int r = child[4 * w + i], j = c++;
+                int j = c++;
                 while (j > 0 && d[3 + j] > t) {
                     d[4 + j] = d[3 + j];
-                    ref[j] = ref[j - 1];
+                    lane[j] = lane[j - 1];
                     j--;
                 }
                 d[4 + j] = t;
-                ref[j] = r;
+                lane[j] = i;
             }
         }
         return c;
@@ -184,7 +219,7 @@ final class Wide4 {
         int nx = ix < 0 ? 12 : 0, ny = iy < 0 ? 16 : 4, nz = iz < 0 ? 20 : 8;
         float[] b = box;
         double[] d = q.wideT;
-        int[] entered = q.wideRef, stack = q.stack;
+        int[] kids = child, entered = q.wideRef, stack = q.stack;
         int sp = 0, ref = root;
         while (true) {
             if (ref >= 0) {
@@ -192,11 +227,11 @@ final class Wide4 {
                     q.nodeVisits++;
                 }
                 if (enter(b, NODE * ref, nx, nx ^ 12, ny, ny ^ 20, nz, nz ^ 28, vox, voy, voz, vix, viy, viz, lo, hi, d)) {
-                    int c = sortEntered(ref, d, entered);
+                    int c = sortEntered(d, entered), w = 4 * ref;
                     for (int j = c - 1; j > 0; j--) {
-                        stack[sp++] = entered[j];
+                        stack[sp++] = kids[w + entered[j]];
                     }
-                    ref = entered[0];
+                    ref = kids[w + entered[0]];
                     continue;
                 }
             } else if (bvh.hit(~ref, q, slot, cache)) {
@@ -220,7 +255,7 @@ final class Wide4 {
         int nx = ix < 0 ? 12 : 0, ny = iy < 0 ? 16 : 4, nz = iz < 0 ? 20 : 8;
         float[] b = box;
         double[] d = q.wideT, stackT = q.stackT;
-        int[] entered = q.wideRef, stack = q.stack;
+        int[] kids = child, entered = q.wideRef, stack = q.stack;
         int sp = 0, ref = root;
         while (true) {
             if (ref >= 0) {
@@ -229,12 +264,12 @@ final class Wide4 {
                 }
                 DoubleVector hi = DoubleVector.broadcast(D, q.tMax);
                 if (enter(b, NODE * ref, nx, nx ^ 12, ny, ny ^ 20, nz, nz ^ 28, vox, voy, voz, vix, viy, viz, lo, hi, d)) {
-                    int c = sortEntered(ref, d, entered);
+                    int c = sortEntered(d, entered), w = 4 * ref;
                     for (int j = c - 1; j > 0; j--) {
-                        stack[sp] = entered[j];
+                        stack[sp] = kids[w + entered[j]];
                         stackT[sp++] = d[4 + j];
                     }
-                    ref = entered[0];
+                    ref = kids[w + entered[0]];
                     continue;
                 }
             } else {
@@ -246,6 +281,74 @@ final class Wide4 {
                 }
                 ref = stack[--sp];
             } while (stackT[sp] > q.tMax * Bvh.SLAB_SLACK);
+        }
+    }
+
+    /**
+     * {@link Bvh#closestHits}'s traversal of a packet that is traced together (one origin and span, one
+     * sign per axis, no infinite inverse: checked there), its rays' queries started: each node's four
+     * boxes tested once for the packet over its inverse directions' range ({@link #enter(float[], int, int,
+     * int, int, int, int, int, DoubleVector, DoubleVector, DoubleVector, DoubleVector, DoubleVector,
+     * DoubleVector, DoubleVector, DoubleVector, DoubleVector, DoubleVector, DoubleVector, double[])}) against
+     * the largest t any ray may still hit at; at a leaf each ray tests the leaf's box with its own span
+     * ({@link Bvh#slabs}, the binary traversal's own test) and, when it passes, the leaf's primitives in its
+     * own query, as its single query would. Each ray's answer is its single query's.
+     */
+    void closestHits(Bvh bvh, RayQuery q, RayQuery[] lanes, int n, double ox, double oy, double oz, double tMin,
+                     double ixLo, double ixHi, double iyLo, double iyHi, double izLo, double izHi, double far) {
+        double[] lix = q.laneIx, liy = q.laneIy, liz = q.laneIz;
+        boolean sx = ixHi < 0, sy = iyHi < 0, sz = izHi < 0;
+        DoubleVector vox = DoubleVector.broadcast(D, ox), voy = DoubleVector.broadcast(D, oy), voz = DoubleVector.broadcast(D, oz);
+        DoubleVector xLo = DoubleVector.broadcast(D, ixLo), xHi = DoubleVector.broadcast(D, ixHi);
+        DoubleVector yLo = DoubleVector.broadcast(D, iyLo), yHi = DoubleVector.broadcast(D, iyHi);
+        DoubleVector zLo = DoubleVector.broadcast(D, izLo), zHi = DoubleVector.broadcast(D, izHi);
+        DoubleVector lo = DoubleVector.broadcast(D, tMin);
+        int nx = sx ? 12 : 0, ny = sy ? 16 : 4, nz = sz ? 20 : 8;
+        float[] b = box, leafBox = q.wideBox;
+        double[] d = q.wideT, stackT = q.stackT;
+        int[] kids = child, entered = q.wideRef, stack = q.stack, stackBox = q.stackBox;
+        int sp = 0, ref = root, at = 0;
+        while (true) {
+            if (ref >= 0) {
+                if (Bvh.COUNT) {
+                    q.nodeVisits++;
+                }
+                DoubleVector hi = DoubleVector.broadcast(D, far);
+                int o = NODE * ref;
+                if (enter(b, o, nx, nx ^ 12, ny, ny ^ 20, nz, nz ^ 28, vox, voy, voz, xLo, xHi, yLo, yHi, zLo, zHi, lo, hi, d)) {
+                    int c = sortEntered(d, entered), w = 4 * ref;
+                    for (int j = c - 1; j > 0; j--) {
+                        stack[sp] = kids[w + entered[j]];
+                        stackBox[sp] = o + entered[j];
+                        stackT[sp++] = d[4 + j];
+                    }
+                    ref = kids[w + entered[0]];
+                    at = o + entered[0];
+                    continue;
+                }
+            } else {
+                for (int a = 0; a < 6; a++) {
+                    leafBox[a] = b[at + 4 * a];   // the leaf's box, as the binary node holds it
+                }
+                double f = Double.NEGATIVE_INFINITY;
+                for (int k = 0; k < n; k++) {
+                    RayQuery l = lanes[k];
+                    if (Bvh.slabs(leafBox, 0, sx, sy, sz, ox, oy, oz, lix[k], liy[k], liz[k], tMin, l.tMax) <= Double.MAX_VALUE) {
+                        bvh.hit(~ref, l);
+                    }
+                    if (l.tMax > f) {
+                        f = l.tMax;
+                    }
+                }
+                far = f;
+            }
+            do {
+                if (sp == 0) {
+                    return;
+                }
+                ref = stack[--sp];
+                at = stackBox[sp];
+            } while (stackT[sp] > far * Bvh.SLAB_SLACK);
         }
     }
 }

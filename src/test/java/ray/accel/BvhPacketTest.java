@@ -95,6 +95,19 @@ class BvhPacketTest {
 
     @Test
     void packetHitsAreSingleRayHitsBitForBit() {
+        packetHitsAreSingleRayHits(Integer.MAX_VALUE);
+    }
+
+    /**
+     * The same over the tree collapsed four-wide ({@link Wide4#closestHits}, the JVM with the Vector API's
+     * module, as the build runs the tests); Wide4Test checks the wide single queries against the binary ones.
+     */
+    @Test
+    void widePacketHitsAreSingleRayHitsBitForBit() {
+        packetHitsAreSingleRayHits(0);
+    }
+
+    private static void packetHitsAreSingleRayHits(int wideNodes) {
         Random r = new Random(2020);
         int lanesChecked = 0, together = 0, ties = 0;
         for (int sceneNo = 0; sceneNo < 6; sceneNo++) {
@@ -105,8 +118,9 @@ class BvhPacketTest {
                 floor.level = -1;
                 all.add(floor);
             }
-            Bvh bvh = Bvh.build(all, new Scene());
+            Bvh bvh = Bvh.build(all, new Scene(), wideNodes);
             assertTrue(bvh.nodeCount() > 100, "a tree deep enough to trace packets through");
+            assertEquals(wideNodes == 0, bvh.isWide());
             TraceContext ctx = new TraceContext(10), single = new TraceContext(10);
             RayPacket p = ctx.packet;
             p.reserve(64);
