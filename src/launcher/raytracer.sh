@@ -160,10 +160,14 @@ esac
 # 0.90-0.96x the CPU time, docs/performance.md, "A 4-wide BVH in SIMD"). The API is an incubator module in JDK
 # 17-25, which the JVM announces on stderr at every start; the JIT policy, which started this script, drops
 # that line (and tells whether its own stderr is a terminal: RAYTRACER_STDERR_TTY, above). Wide4's box test
-# is inlined whatever C2's size heuristics say: a vector passed to a call that is not inlined is an object
-# on the heap (mesh1m's peak RSS was 2 GiB without it).
+# (enter, planes) is inlined whatever C2's size heuristics say: a vector passed to a call that is not inlined
+# is an object on the heap (mesh1m's peak RSS was 2 GiB without it). Its three traversals (*Hit*) are never
+# inlined into their callers in Bvh, so C2 compiles each once, on its own: inlined, they were compiled twice,
+# in Bvh's method and alone (mesh1m 0.96x the CPU time, 1 s less of C2's time; docs/performance.md).
 if [ "${RAYTRACER_JIT-}" = long ] && [ "${RAYTRACER_SIMD-}" = 1 ]; then
-    set -- --add-modules=jdk.incubator.vector -Dray.bvh.wide=true -XX:CompileCommand=inline,ray.accel.Wide4::* "$@"
+    set -- --add-modules=jdk.incubator.vector -Dray.bvh.wide=true -XX:CompileCommand=inline,ray.accel.Wide4::enter \
+        -XX:CompileCommand=inline,ray.accel.Wide4::planes -XX:CompileCommand=inline,ray.accel.Wide4::sortEntered \
+        "-XX:CompileCommand=dontinline,ray.accel.Wide4::*Hit*" "$@"   # quoted: a glob
 fi
 
 # The build's own JVM options: a constant the build writes here (quoted words, no path in it).

@@ -50,7 +50,8 @@ final class InProcessTables {
             // nodes or more traversed four boxes at a time (ray.accel.Wide4); the JVM's notice of the
             // incubator module is the log's first line
             cmd.addAll(List.of("--add-modules=jdk.incubator.vector", "-Dray.bvh.wide=true", "-XX:CompileCommand=quiet",
-                    "-XX:CompileCommand=inline,ray.accel.Wide4::*"));
+                    "-XX:CompileCommand=inline,ray.accel.Wide4::enter", "-XX:CompileCommand=inline,ray.accel.Wide4::planes",
+                    "-XX:CompileCommand=inline,ray.accel.Wide4::sortEntered", "-XX:CompileCommand=dontinline,ray.accel.Wide4::*Hit*"));
         }
         cmd.addAll(List.of("-cp", System.getProperty("java.class.path"), "ray.bench.Throughput"));
         cmd.addAll(List.of(args));
