@@ -163,7 +163,8 @@ esac
 # (enter, planes) is inlined whatever C2's size heuristics say: a vector passed to a call that is not inlined
 # is an object on the heap (mesh1m's peak RSS was 2 GiB without it). Its three traversals (*Hit*) are never
 # inlined into their callers in Bvh, so C2 compiles each once, on its own: inlined, they were compiled twice,
-# in Bvh's method and alone (mesh1m 0.96x the CPU time, 1 s less of C2's time; docs/performance.md).
+# in Bvh's method and alone (with the unsorted any hit, mesh1m 0.91-0.94x the CPU time; docs/performance.md,
+# "The JIT's share of a long render").
 if [ "${RAYTRACER_JIT-}" = long ] && [ "${RAYTRACER_SIMD-}" = 1 ]; then
     set -- --add-modules=jdk.incubator.vector -Dray.bvh.wide=true -XX:CompileCommand=inline,ray.accel.Wide4::enter \
         -XX:CompileCommand=inline,ray.accel.Wide4::planes -XX:CompileCommand=inline,ray.accel.Wide4::sortEntered \
