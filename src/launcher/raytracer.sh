@@ -156,8 +156,8 @@ case "${LC_ALL:-${LC_CTYPE:-$LANG}}" in
 esac
 
 # A long render with RAYTRACER_SIMD=1 (the JIT policy sets it for a large scene where the JDK has the
-# module, on JDK 17) traverses its tree four boxes at a time through the JDK's Vector API (ray.accel.Wide4; mesh1m
-# 0.90-0.96x the CPU time, docs/performance.md, "A 4-wide BVH in SIMD"). The API is an incubator module in JDK
+# module, on JDK 17-25) traverses its tree four boxes at a time through the JDK's Vector API (ray.accel.Wide4; mesh1m
+# 0.90-0.94x the CPU time, docs/performance.md, "A 4-wide BVH in SIMD"). The API is an incubator module in JDK
 # 17-25, which the JVM announces on stderr at every start; the JIT policy, which started this script, drops
 # that line (and tells whether its own stderr is a terminal: RAYTRACER_STDERR_TTY, above). Wide4's box test
 # (enter, planes) is inlined whatever C2's size heuristics say: a vector passed to a call that is not inlined

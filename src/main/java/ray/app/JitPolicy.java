@@ -166,20 +166,33 @@ final class JitPolicy {
         return n >= WIDE_PRIMITIVES;
     }
 
-    /** The JDK release on which the SIMD traversal was measured to pay (mesh1m 0.90-0.96x the CPU time). */
-    static final int SIMD_JDK = 17;
+    /**
+     * The JDK releases on which a long render gets the SIMD traversal: measured to pay on the first and
+     * the last (mesh1m 0.91-0.94x the CPU time on 17, 0.90x on 25; docs/performance.md, "The JIT's share
+     * of a long render"), the same incubating module between them (18-24 not measured). Later releases
+     * are left out until measured: the module may change or go.
+     */
+    static final int FIRST_SIMD_JDK = 17, LAST_SIMD_JDK = 25;
 
     /**
      * Whether a long render on this JDK gets the SIMD traversal: the JDK the render's JVM runs is this
-     * one (the same launcher, the same JAVA_HOME), and it must be {@link #SIMD_JDK} with
-     * {@code jdk.incubator.vector} among its own modules. On JDK 25 it was measured not to pay (mesh1m
-     * 1.10x the CPU time: C2's scalar traversal there is faster, and the vector code's warm-up dearer);
-     * the releases between were not measured. {@code RAYTRACER_SIMD=1} asks for it on any JDK.
+     * one (the same launcher, the same JAVA_HOME), and it must be one of {@link #FIRST_SIMD_JDK} to
+     * {@link #LAST_SIMD_JDK} with {@code jdk.incubator.vector} among its own modules. (Session 27 measured
+     * JDK 25 at 1.10x the CPU time with it and left 25 out; the cause was C2 compiling each wide traversal
+     * twice, inlined into its caller and alone, which the launcher no longer lets it do.)
+     * {@code RAYTRACER_SIMD=1} asks for it on any JDK.
      */
     static boolean simdPays() {
-        if (Runtime.version().feature() != SIMD_JDK) {
-            return false;
-        }
+        return simdPays(Runtime.version().feature(), hasVectorModule());
+    }
+
+    /** {@link #simdPays()}'s rule for a JDK of release {@code feature}, with or without the module. */
+    static boolean simdPays(int feature, boolean hasModule) {
+        return feature >= FIRST_SIMD_JDK && feature <= LAST_SIMD_JDK && hasModule;
+    }
+
+    /** Whether this JDK has {@code jdk.incubator.vector} among its own modules. */
+    static boolean hasVectorModule() {
         try {
             return java.lang.module.ModuleFinder.ofSystem().find("jdk.incubator.vector").isPresent();
         } catch (RuntimeException e) {

@@ -199,7 +199,7 @@ class CommandLineProcessTest {
      * A scene with large OBJ files is judged before they are read (JitPolicy.isLongBeforeFiles): the launcher
      * starts again before the parser reads the mesh (here a 17 MB file of zeros that no parse could accept),
      * and a short render of the same mesh is not sent away. A large mesh gets the SIMD traversal
-     * (RAYTRACER_SIMD=1, on JDK 17 with the Vector API's module); the render's stderr then comes through a
+     * (RAYTRACER_SIMD=1, on JDK 17-25 with the Vector API's module); the render's stderr then comes through a
      * pipe that drops the JVM's notice of the module, and the launcher is told that this stderr is not a
      * terminal (RAYTRACER_STDERR_TTY).
      */
@@ -219,7 +219,7 @@ class CommandLineProcessTest {
         Map<String, String> env = Map.of("RAYTRACER_RELAUNCH", fake.toString());
         Result r = raytracer(null, env, null, "-q", "mesh-long.txt");
         assertEquals(7, r.status(), r.err());
-        if (JitPolicy.simdPays()) {   // JDK 17 (CI's)
+        if (JitPolicy.simdPays()) {   // JDK 17-25 with the module (CI's 17)
             assertEquals("from the render\n", r.err(), "the OBJ file was not read; the JVM's notice of the module dropped");
             assertEquals("long|1|false|-q mesh-long.txt", Files.readString(dir.resolve("relaunched.txt")).trim());
         } else {
