@@ -165,7 +165,17 @@ esac
 # inlined into their callers in Bvh, so C2 compiles each once, on its own: inlined, they were compiled twice,
 # in Bvh's method and alone (with the unsorted any hit, mesh1m 0.91-0.94x the CPU time; docs/performance.md,
 # "The JIT's share of a long render").
+# Until C2 has compiled the wide traversal its vectors are objects, a burst of garbage for which the parallel
+# collector grew the young generation to hundreds of MiB (mesh1m's peak RSS 640-1100 MiB). Capped at 192 MiB
+# it is collected in a few more short pauses at the same CPU time (mesh100k at 48 M camera rays 0.99x; a
+# fixed -Xmn96m cost it 1.03-1.07x), peak RSS about 460 and 380 MiB. A cap, not a size (-Xmn): the old
+# generation keeps the rest of a small heap. Not when the user's options size the heap themselves; a heap of
+# 192 MiB or less (a machine of 768 MiB) gets the JVM's warning that the cap is the whole heap.
 if [ "${RAYTRACER_JIT-}" = long ] && [ "${RAYTRACER_SIMD-}" = 1 ]; then
+    case " $JAVA_OPTS $RAYTRACER_OPTS " in
+        *-Xm[xns]*|*NewSize*|*NewRatio*|*HeapSize*) ;;
+        *) set -- -XX:MaxNewSize=192m "$@" ;;
+    esac
     set -- --add-modules=jdk.incubator.vector -Dray.bvh.wide=true -XX:CompileCommand=inline,ray.accel.Wide4::enter \
         -XX:CompileCommand=inline,ray.accel.Wide4::planes -XX:CompileCommand=inline,ray.accel.Wide4::sortEntered \
         "-XX:CompileCommand=dontinline,ray.accel.Wide4::*Hit*" "$@"   # quoted: a glob

@@ -181,6 +181,17 @@ class LauncherTest {
         Run off = run(script, dir, Map.of("RAYTRACER_JIT", "long", "JAVA_OPTS", show), "--version");
         assertTrue(!off.out.contains("jdk.incubator.vector") && !off.err.contains("ray.bvh.wide"), off.out + off.err);
         assertTrue(off.err.contains("raytracer.stderrTty = false"), "stderr is a file here: " + off.err);
+        // the young generation capped for the vector code's warm-up garbage, unless the user sizes the heap
+        Run young = run(script, dir, Map.of("RAYTRACER_JIT", "long", "RAYTRACER_SIMD", "1", "JAVA_OPTS", "-XX:+PrintFlagsFinal"),
+                "--version");
+        assertEquals(192L << 20, flag(young.out, "MaxNewSize"), "a SIMD render's young generation");
+        Run sized = run(script, dir, Map.of("RAYTRACER_JIT", "long", "RAYTRACER_SIMD", "1", "JAVA_OPTS",
+                "-XX:+PrintFlagsFinal -Xmx64m"), "--version");
+        assertEquals(0, sized.status, sized.err);
+        assertTrue(flag(sized.out, "MaxNewSize") < 64L << 20 && !sized.err.contains("MaxNewSize"),
+                "the user's heap size, no warning: " + sized.err);
+        Run plainYoung = run(script, dir, Map.of("RAYTRACER_JIT", "long", "JAVA_OPTS", "-XX:+PrintFlagsFinal"), "--version");
+        assertTrue(flag(plainYoung.out, "MaxNewSize") != 192L << 20, "only a SIMD render's");
     }
 
     /** The value of JVM flag {@code name} in -XX:+PrintFlagsFinal's table. */
