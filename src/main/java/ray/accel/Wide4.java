@@ -34,7 +34,8 @@ import ray.IntersectionRecord;
  * traversal does. The any-hit query takes them in lane order, unsorted, as Embree's occlusion traversal
  * does: any hit ends it, so nearest first buys it little, and the sort costs about what it saves (in-process
  * on mesh100k, without it: camera rays as any-hit queries 1.12x the rays a second, shadow rays 0.94x; whole
- * long renders even or better: mesh1m 0.98-0.99x the CPU time, mesh100k at 48 M camera rays 0.995x). Camera packets have their own traversal ({@link #closestHits}), as in {@link Bvh}.
+ * long renders even or better: mesh1m 0.98-0.99x the CPU time, mesh100k at 48 M camera rays 0.995x).
+ * Camera packets have their own traversal ({@link #closestHits}), as in {@link Bvh}.
  *
  * <p>Memory: per node 24 floats of boxes and 4 child references, 112 bytes, twice a binary node's, for
  * about half as many nodes (a node over leaves is often filled with two or three children): about what
