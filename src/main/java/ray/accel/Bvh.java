@@ -608,10 +608,7 @@ public final class Bvh implements Accelerator {
         double ix = 1 / q.dx, iy = 1 / q.dy, iz = 1 / q.dz;
         boolean sx = ix < 0, sy = iy < 0, sz = iz < 0;
         if (root < 0 && !(slabs(rootBox, 0, sx, sy, sz, ox, oy, oz, ix, iy, iz, tMin, tMax) <= Double.MAX_VALUE)) {
-            if (cache) {
-                q.occluderSet[slot] = -1;
-            }
-            return false;
+            return unshadowed(q, slot, cache);
         }
         if (wide != null) {
             return wide.anyHit(this, q, slot, cache, ix, iy, iz);
@@ -650,13 +647,21 @@ public final class Bvh implements Accelerator {
                 return true;
             }
             if (sp == 0) {
-                if (cache) {
-                    q.occluderSet[slot] = -1;   // unshadowed: the next ray of this slot traverses at once
-                }
-                return false;
+                return unshadowed(q, slot, cache);
             }
             ref = stack[--sp];
         }
+    }
+
+    /**
+     * The end of an any-hit query that found nothing (both traversals'): the occluder cache of {@code slot}
+     * (when {@code cache}) is emptied, so the next ray of that slot traverses at once. Returns false.
+     */
+    static boolean unshadowed(RayQuery q, int slot, boolean cache) {
+        if (cache) {
+            q.occluderSet[slot] = -1;
+        }
+        return false;
     }
 
     /**

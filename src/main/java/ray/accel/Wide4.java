@@ -261,10 +261,7 @@ final class Wide4 {
                 return true;
             }
             if (sp == 0) {
-                if (cache) {
-                    q.occluderSet[slot] = -1;   // unshadowed: the next ray of this slot traverses at once
-                }
-                return false;
+                return Bvh.unshadowed(q, slot, cache);
             }
             ref = stack[--sp];
         }
