@@ -86,12 +86,24 @@ public class Sphere extends Surface {
             return Double.NaN;
         }
         double b = fx * dx + fy * dy + fz * dz;            // half the linear coefficient
+        double ff = fx * fx + fy * fy + fz * fz;
+        double c = ff - r * r;
+        // a ray leaving from outside the sphere (c > 0) and heading away from its centre (b > 0): both
+        // roots are negative (their product c / a > 0, their sum -2b / a < 0), and so are the computed
+        // ones below (q < 0, so c / q < 0 and q / a < 0), so no t >= tMin >= 0 is a hit. Every shadow ray
+        // leaving a sphere toward its light takes this exit before any square root. With tMin = 0 (a spawned
+        // ray) a root rounded to -0.0 would pass; the magnitudes checked rule that out: a disc <= a r^2 <
+        // a ff, so q is finite, and |q| <= 2 sqrt(a ff) <= a + ff (Cauchy-Schwarz), so |c / q| >= 2^-901 and
+        // |q / a| >= b / a >= 2^-900
+        if (b > 0 && c > 0 && tMin >= 0
+                && (tMin > 0 || (a * ff <= 0x1p1000 && c >= 0x1p-900 * (a + ff) && b >= 0x1p-900 * a))) {
+            return Double.NaN;
+        }
         // a clear miss, decided without a division or a square root: the centre's squared distance from
         // the line is |f x d|^2 / a exactly; when it exceeds r^2 by far more than any rounding below
         // (a relative 1e-6 of r^2, plus 1e-6 of |f|^2 for the cancellation in the cross product),
         // the exact test below would find disc < 0 too
         double qx = fy * dz - fz * dy, qy = fz * dx - fx * dz, qz = fx * dy - fy * dx;
-        double ff = fx * fx + fy * fy + fz * fz;
         if (qx * qx + qy * qy + qz * qz > a * (r * r * (1 + 1e-6) + 1e-6 * ff)) {
             return Double.NaN;
         }
@@ -103,7 +115,6 @@ public class Sphere extends Surface {
         if (disc < 0) {
             return Double.NaN;
         }
-        double c = ff - r * r;
         // stable roots: q = -(b + sign(b) sqrt(a disc)); t0 = c / q, t1 = q / a
         double q = -(b + Math.copySign(Math.sqrt(a * disc), b));
         double t0, t1;
