@@ -387,9 +387,15 @@ public final class Bvh implements Accelerator {
             } else {
                 hit(~ref, q, one, run, index, ps);
             }
-            // pop the nearest pending subtree that may still hold a closer hit
+            // pop the nearest pending subtree that may still hold a closer hit. The stack test is sp <= 0,
+            // not sp == 0 (the same for a count that never goes below 0), in every closest-hit traversal's
+            // pop loop: C2 compiled this loop, which counts sp down to a != exit, as a counted loop guarded
+            // by a loop-limit check, which some ray failed a moment into every long render; the trap threw
+            // away the whole inlined traversal's code for a recompilation (JFR's jdk.Deoptimization reason
+            // "loop_limit_check": 130-300 ms of C2 compilation in classichd, 80-300 ms in mesh1m). With
+            // <= the exit needs no such check, and no render showed the trap again
             do {
-                if (sp == 0) {
+                if (sp <= 0) {
                     return finish(q, rec);
                 }
                 ref = stack[--sp];
@@ -556,7 +562,7 @@ public final class Bvh implements Accelerator {
                 far = f;
             }
             do {
-                if (sp == 0) {
+                if (sp <= 0) {   // not sp == 0: see closestHit's pop loop
                     for (int k = 0; k < n; k++) {
                         p.hit[k] = finish(lanes[k], p.records[k]);
                     }

@@ -296,7 +296,7 @@ final class Wide4 {
                 bvh.hit(~ref, q);
             }
             do {
-                if (sp == 0) {
+                if (sp <= 0) {   // not sp == 0: see Bvh.closestHit's pop loop
                     return Bvh.finish(q, rec);
                 }
                 ref = stack[--sp];
@@ -363,7 +363,7 @@ final class Wide4 {
                 far = f;
             }
             do {
-                if (sp == 0) {
+                if (sp <= 0) {   // not sp == 0: see Bvh.closestHit's pop loop
                     return;
                 }
                 ref = stack[--sp];
