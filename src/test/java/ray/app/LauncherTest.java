@@ -160,7 +160,8 @@ class LauncherTest {
      * A long render with RAYTRACER_SIMD=1 gets the Vector API's module, the wide traversal and Wide4's
      * inlining (the JIT policy drops the JVM's notice of the module: JitPolicyNoticeTest), the exit status
      * is the JVM's, and RAYTRACER_STDERR_TTY (the JIT policy's own answer, its child's stderr being a pipe)
-     * decides whether stderr counts as a terminal. Without RAYTRACER_SIMD, no module.
+     * decides whether stderr counts as a terminal. Without RAYTRACER_SIMD, no module. Every long render,
+     * and no short one, gets the render's warm-up pixels ({@code ray.render.warmUp}).
      */
     @Test
     void aLongRenderWithSimdGetsTheVectorModule() throws Exception {
@@ -181,6 +182,10 @@ class LauncherTest {
         Run off = run(script, dir, Map.of("RAYTRACER_JIT", "long", "JAVA_OPTS", show), "--version");
         assertTrue(!off.out.contains("jdk.incubator.vector") && !off.err.contains("ray.bvh.wide"), off.out + off.err);
         assertTrue(off.err.contains("raytracer.stderrTty = false"), "stderr is a file here: " + off.err);
+        // every long render warms the JIT's profiles on pixels spread over the image; a short one does not
+        assertTrue(off.err.contains("ray.render.warmUp = true") && ok.err.contains("ray.render.warmUp = true"), off.err);
+        Run shortShow = run(script, dir, Map.of("RAYTRACER_JIT", "short", "JAVA_OPTS", show), "--version");
+        assertTrue(!shortShow.err.contains("ray.render.warmUp"), shortShow.err);
         // the young generation capped for the vector code's warm-up garbage, unless the user sizes the heap
         Run young = run(script, dir, Map.of("RAYTRACER_JIT", "long", "RAYTRACER_SIMD", "1", "JAVA_OPTS", "-XX:+PrintFlagsFinal"),
                 "--version");
