@@ -25,7 +25,9 @@ import ray.plan.RenderPlan;
  * and a second parse of the first scene (a few percent of a long render). A scene with large OBJ meshes is
  * judged before they are read ({@link #isLongBeforeFiles}, told by the parser through
  * {@link BeforeMeshes}), so that a long mesh render does not read its files twice. A long render of a large
- * scene also gets the JDK's Vector API, for the BVH's SIMD traversal ({@link #SIMD}).
+ * scene also gets the JDK's Vector API, for the BVH's SIMD traversal ({@link #SIMD}); every long render
+ * renders a few pixels spread over the image first, so C2 compiles from the whole image's profiles (the
+ * launcher's {@code -Dray.render.warmUp=true}, {@code ray.render.Renderer#WARM_UP}).
  */
 final class JitPolicy {
 
