@@ -78,7 +78,10 @@ class WarmUpTest {
         final List<String> tiles = new ArrayList<>();
 
         Result(Scene s, boolean warm, int threads) {
-            Renderer r = new Renderer(s).threads(threads).warmUp(warm);
+            this(new Renderer(s).threads(threads).warmUp(warm));
+        }
+
+        Result(Renderer r) {
             r.listener(new ProgressListener() {
                 @Override
                 public synchronized void tileDone(Image image, int x0, int y0, int x1, int y1, int done, int total) {
@@ -110,6 +113,23 @@ class WarmUpTest {
                 assertEquals(plain.tiles, warm.tiles, "tiles reported: " + what);
             }
         }
+    }
+
+    /**
+     * A window of the image (how SplitRender's tasks render): its warm-up pixels lie in the window (image
+     * coordinates from the window's corner), and its image is the window's without the warm-up.
+     */
+    @Test
+    void aWindowWarmsUpInsideItself() throws Exception {
+        Scene s = spheres(24, "Camera");
+        Result plain = new Result(new Renderer(s).threads(2).warmUp(false).window(37, 21, 150, 117));
+        Result warm = new Result(new Renderer(s).threads(2).warmUp(true).window(37, 21, 150, 117));
+        assertTrue(Renderer.warmUpPixels(150 - 37, 117 - 21) > 0);
+        assertArrayEquals(plain.rgb, warm.rgb);
+        assertArrayEquals(plain.rays, warm.rays);
+        assertEquals(plain.tiles, warm.tiles);
+        double[] whole = new Result(s, false, 2).rgb;
+        assertEquals(whole[3 * (50 * 160 + 60)], warm.rgb[3 * ((50 - 21) * (150 - 37) + 60 - 37)], 0, "the window is the image's");
     }
 
     /** Every camera ray of a 128 x 128 image hits the material; the warm-up adds 16 pixels' 4 samples each. */
