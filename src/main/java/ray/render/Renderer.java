@@ -24,7 +24,7 @@ public final class Renderer {
 
     public static final int TILE = 16;
     /**
-     * Whether grid renders start with {@link #warmUpPixels} pixels spread over the image: asked for by
+     * Whether renders start with {@link #warmUpPixels} pixels spread over the image: asked for by
      * {@code -Dray.render.warmUp=true}, which the launcher passes to a long render (full tiered
      * compilation). C2 compiles the render's hottest methods from the branch and type profiles of their
      * first few thousand calls. Taken from the first tiles alone, those calls see one corner of the image
@@ -95,10 +95,11 @@ public final class Renderer {
     }
 
     /**
-     * Whether a grid render first renders {@link #warmUpPixels} pixels spread over the image (default:
-     * {@link #WARM_UP}, the launcher's choice for a long render). Their rays are not counted and the
-     * listener does not hear of them; each is rendered again, to the same value, with its tile, so the
-     * image is the same either way.
+     * Whether a render first renders {@link #warmUpPixels} pixels spread over the image (default:
+     * {@link #WARM_UP}, the launcher's choice for a long render). Their rays are not counted, the
+     * listener does not hear of them, and nothing of them is kept (the grid render's writes, rendered
+     * again to the same value with their tiles; a film's samples traced and dropped), so the image is the
+     * same either way.
      */
     Renderer warmUp(boolean on) {
         this.warmUp = on;
@@ -509,17 +510,15 @@ public final class Renderer {
      * Rethrows the first failure; throws {@link RenderCancelledException} when cancelled.
      */
     void runTiles(Image image, TileWork work) {
-        runTiles(image, work, true, area(), 0);
+        runTiles(image, work, true, area(), null);
     }
 
     /**
      * {@link #runTiles(Image, TileWork)} for the grid render's work, whose workers write each pixel's
-     * final value (rendering a pixel twice writes it twice, the same): with the warm-up pixels first
-     * when {@link #warmUp(boolean)} is on.
+     * final value (rendering a pixel twice writes it twice, the same), so it is its own warm-up.
      */
     private void runGridTiles(Image image, TileWork work) {
-        Area a = area();
-        runTiles(image, work, true, a, warmUp ? warmUpPixels(a.width(), a.height()) : 0);
+        runTiles(image, work, true, area(), work);
     }
 
     /** Warm-up pixels for a w x h area: {@link #WARM_UP_PIXELS}, at most one in 1024 of its pixels. */
@@ -539,17 +538,20 @@ public final class Renderer {
     }
 
     void runTiles(Image image, TileWork work, boolean report, Area area) {
-        runTiles(image, work, report, area, 0);
+        runTiles(image, work, report, area, null);
     }
 
     /**
      * {@link #runTiles(Image, TileWork)} over the pixels of {@code area} (tile corners are image
-     * coordinates), telling the listener about finished tiles only when {@code report}; first, when
-     * {@code warm > 0}, pixels 0 to warm - 1 of {@link #warmUpPixel}, one at a time, each by a worker
-     * on a context of its own whose rays are not counted (the work must write a pixel's final value).
+     * coordinates), telling the listener about finished tiles only when {@code report}. First, when
+     * {@link #warmUp(boolean)} is on and {@code warmUpWork} is given, the area's {@link #warmUpPixels}
+     * pixels of {@link #warmUpPixel}, one at a time, each by a worker of {@code warmUpWork} on a context
+     * of the thread's own whose rays are not counted: a work that leaves nothing behind, or writes a
+     * pixel's final value (its tile writes the same again).
      */
-    private void runTiles(Image image, TileWork work, boolean report, Area area, int warm) {
+    void runTiles(Image image, TileWork work, boolean report, Area area, TileWork warmUpWork) {
         int w = area.width(), h = area.height(), ax = area.x0, ay = area.y0;
+        int warm = warmUp && warmUpWork != null ? warmUpPixels(w, h) : 0;
         final int size = tileSize(w, h, threads);
         int tilesX = (w + size - 1) / size, tilesY = (h + size - 1) / size, total = tilesX * tilesY;
         final long stride = spreadStride(total);
@@ -576,7 +578,7 @@ public final class Renderer {
                         if (warm > 0) {
                             TraceContext uncounted = new TraceContext(maxDepth);
                             TraceContext.bind(uncounted);
-                            TileWorker first = work.worker(uncounted);
+                            TileWorker first = warmUpWork.worker(uncounted);
                             for (int k; !cancelled && (k = warmed.getAndIncrement()) < warm; ) {
                                 int p = warmUpPixel(k, w, h), x = ax + p % w, y = ay + p / w;
                                 first.tile(x, y, x + 1, y + 1);

@@ -191,7 +191,8 @@ final class SampledRender {
     }
 
     private void pass(Renderer.TileWork work, Renderer.Area tiles, int pass, int passes) {
-        renderer.runTiles(image, work, true, tiles);
+        // the first pass warms the JIT up on pixels spread over the image (a long render: Renderer.WARM_UP)
+        renderer.runTiles(image, work, true, tiles, pass == 0 ? new Dropped(Math.min(sampler.samplesPerPixel(), 16)) : null);
         if (progressive) {
             renderer.listener().passDone(image, pass, passes);
         }
@@ -215,6 +216,36 @@ final class SampledRender {
         if (!(Double.isFinite(c.x) && Double.isFinite(c.y) && Double.isFinite(c.z))) {
             ctx.stats.invalidSamples++;
             c.set(0, 0, 0);
+        }
+    }
+
+    /**
+     * Samples [0, n) of each pixel traced and dropped: no film, no image. The warm-up of a film render
+     * ({@link Renderer#runTiles(Image, Renderer.TileWork, boolean, Renderer.Area, Renderer.TileWork)}):
+     * the tracing is the render's own, so the JIT profiles what the render will run.
+     */
+    private final class Dropped implements Renderer.TileWork {
+        private final int n;
+
+        Dropped(int n) {
+            this.n = n;
+        }
+
+        @Override
+        public Renderer.TileWorker worker(TraceContext ctx) {
+            Vector3d c = new Vector3d();
+            return new Renderer.TileWorker() {
+                @Override
+                public void tile(int x0, int y0, int x1, int y1) {
+                    for (int y = y0; y < y1; y++) {
+                        for (int x = x0; x < x1; x++) {
+                            for (int s = 0; s < n; s++) {
+                                trace(ctx, x, y, s, c);
+                            }
+                        }
+                    }
+                }
+            };
         }
     }
 

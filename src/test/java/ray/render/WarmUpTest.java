@@ -22,9 +22,10 @@ import ray.parse.Parser;
 /**
  * A long render's warm-up ({@link Renderer#WARM_UP}): pixels spread over the image rendered before the
  * tiles, so that the JIT's profiles are the whole image's. It must change nothing a user sees: the image
- * is bit for bit the one without it, for any thread count and on each of the grid render's paths
- * (camera packets, camera rays from the tables, a camera making its own rays); the rays counted and the
- * tiles reported are the same; and yet the warm-up pixels are rendered (a material counts its calls).
+ * is bit for bit the one without it, for any thread count, on each of the grid render's paths (camera
+ * packets, camera rays from the tables, a camera making its own rays), for the film renders (the other
+ * samplers, progressive passes) and for a window; the rays counted and the tiles reported are the same;
+ * and yet the warm-up pixels are rendered (a material counts its calls).
  */
 class WarmUpTest {
 
@@ -116,6 +117,40 @@ class WarmUpTest {
     }
 
     /**
+     * The film renders (the other samplers, progressive passes): their warm-up traces samples and drops
+     * them, so the film, the image, the rays and the tiles are those without it, and the warm-up's
+     * samples are traced (the counting material's calls).
+     */
+    @Test
+    void filmRendersDropTheirWarmUpSamples() throws Exception {
+        Scene s = spheres(24, "Camera");
+        Object[][] cases = {{"jittered", 3, false}, {"sobol", 2, false}, {"adaptive", 3, false}, {"grid", 3, true},
+            {"sobol", 4, true}};
+        for (Object[] c : cases) {
+            String what = c[0] + " " + c[1] + "x" + c[1] + (Boolean.TRUE.equals(c[2]) ? " progressive" : "");
+            Result plain = new Result(film(s, false, c));
+            for (int threads : new int[] {1, 2}) {
+                Result warm = new Result(film(s, true, c).threads(threads));
+                assertArrayEquals(plain.rgb, warm.rgb, what + ", " + threads + " threads");
+                assertArrayEquals(plain.rays, warm.rays, "rays counted: " + what);
+                assertEquals(plain.tiles, warm.tiles, "tiles reported: " + what);
+            }
+        }
+        Scene counted = counting();
+        Counting.CALLS.set(0);
+        new Renderer(counted).threads(2).warmUp(false).settings(new ray.settings.RenderSettings().sampler("jittered").samples(5)).render();
+        assertEquals(128 * 128 * 25, Counting.CALLS.get());
+        Counting.CALLS.set(0);
+        new Renderer(counted).threads(2).warmUp(true).settings(new ray.settings.RenderSettings().sampler("jittered").samples(5)).render();
+        assertEquals(128 * 128 * 25 + 16 * 16, Counting.CALLS.get(), "16 pixels' first 16 samples, dropped");
+    }
+
+    private static Renderer film(Scene s, boolean warm, Object[] c) {
+        return new Renderer(s).threads(2).warmUp(warm).settings(new ray.settings.RenderSettings().sampler((String) c[0])
+                .samples((Integer) c[1]).progressive((Boolean) c[2]).targetError(1));
+    }
+
+    /**
      * A window of the image (how SplitRender's tasks render): its warm-up pixels lie in the window (image
      * coordinates from the window's corner), and its image is the window's without the warm-up.
      */
@@ -135,9 +170,7 @@ class WarmUpTest {
     /** Every camera ray of a 128 x 128 image hits the material; the warm-up adds 16 pixels' 4 samples each. */
     @Test
     void theWarmUpPixelsAreRendered() throws Exception {
-        Scene s = Parser.parse("Width 128\nHeight 128\nAASamples 2\n\nCamera Camera\nVector3d eye [0 0 3]\nVector3d target [0 0 0]\n"
-                + "double yFOV 90\n\nMaterial ray.render.WarmUpTest$Counting m\n\nSurface Sphere\nVector3d center [0 0 0]\n"
-                + "double radius 10\nref material m\n", "w.txt", new ArrayList<>());
+        Scene s = counting();
         Counting.CALLS.set(0);
         new Renderer(s).threads(2).warmUp(false).render();
         assertEquals(128 * 128 * 4, Counting.CALLS.get());
@@ -145,6 +178,13 @@ class WarmUpTest {
         new Renderer(s).threads(2).warmUp(true).render();
         assertEquals(16, Renderer.warmUpPixels(128, 128));
         assertEquals(128 * 128 * 4 + 16 * 4, Counting.CALLS.get());
+    }
+
+    /** A 128 x 128 image at 2 x 2 samples whose every camera ray hits the counting material. */
+    private static Scene counting() throws Exception {
+        return Parser.parse("Width 128\nHeight 128\nAASamples 2\n\nCamera Camera\nVector3d eye [0 0 3]\nVector3d target [0 0 0]\n"
+                + "double yFOV 90\n\nMaterial ray.render.WarmUpTest$Counting m\n\nSurface Sphere\nVector3d center [0 0 0]\n"
+                + "double radius 10\nref material m\n", "w.txt", new ArrayList<>());
     }
 
     /**
