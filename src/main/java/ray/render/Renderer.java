@@ -30,8 +30,9 @@ public final class Renderer {
      * first few thousand calls. Taken from the first tiles alone, those calls see one corner of the image
      * (its sky, one material, rays of one direction sign), and each branch or type the rest of the image
      * brings later throws C2's code away for a recompilation of the whole inlined traversal (80-250 ms
-     * each; classichd recompiled Bvh.closestHit five times). Pixels spread over the image first make
-     * the profile the image's: classichd's C2 compile time 1.0-1.5 s down to 0.8-0.95 s.
+     * each; classichd recompiled Bvh.closestHit four or five times). Pixels spread over the image first
+     * make the profile the image's: classichd's C2 compilations took 1.0-1.5 s (their wall time), now
+     * 0.8-0.95 s, and its CPU time 0.94x (docs/performance.md, "C2's profiles from the whole image").
      */
     static final boolean WARM_UP = Boolean.getBoolean("ray.render.warmUp");
     /** The most warm-up pixels a render takes: 128, and no more than one pixel in 1024 of the image. */
