@@ -33,11 +33,13 @@ final class JitPolicy {
 
     /**
      * Expected rays (camera rays and the shadow rays of their first hits) from which a render is long.
-     * Measured (docs/performance.md, session 26): the classic scene with 9x9 samples (75 M such rays, 3.8
-     * CPU s under C1) takes 1.13x the CPU under C2, classichd (133 M, 6.9 CPU s) 0.94x, and the 640x480
-     * classic scene (8 M) about 2x: the break-even lies near 1.15e8.
+     * Measured (docs/performance.md, session 30, after the long render's warm-up pixels cut C2's
+     * recompilations), C2's CPU over C1's: the classic scene with 5x5 samples (23 M such rays) 1.40, 7x7
+     * (45 M) 1.03, 8x8 (59 M) 1.03, 9x9 (75 M) 0.91 (0.97 with the relaunch's own JVM), mirrors at 9x9
+     * (75 M) 0.80 with the relaunch; so from 7e7. (Session 26, before the warm-up: classic at 9x9 1.13,
+     * classichd 0.94, and a threshold of 1e8.)
      */
-    static final double LONG_RAYS = 1e8;
+    static final double LONG_RAYS = 7e7;
     /** The environment variable the launcher sets to its own path when this process may start it again. */
     static final String RELAUNCH = "RAYTRACER_RELAUNCH";
 
