@@ -246,8 +246,8 @@ public final class Bvh implements Accelerator {
         }
         List<Surface> bounded = new ArrayList<>(surfaces.size());
         List<Surface> unbounded = new ArrayList<>();
-        // rounded outward to floats here, as the builder keeps them: no double copy of every box
-        float[] box = new float[6 * surfaces.size()];
+        // rounded outward to floats here, kept as the builder keeps them (BvhBuilder.key): no double copy of every box
+        int[] box = new int[6 * surfaces.size()];
         Aabb scratch = new Aabb();
         for (Surface s : surfaces) {
             if (s.isDegenerate()) {
@@ -259,8 +259,12 @@ public final class Bvh implements Accelerator {
             }
             if (a.isFinite()) {
                 int i = bounded.size();
-                box[6 * i] = BvhBuilder.down(a.minX); box[6 * i + 1] = BvhBuilder.down(a.minY); box[6 * i + 2] = BvhBuilder.down(a.minZ);
-                box[6 * i + 3] = BvhBuilder.up(a.maxX); box[6 * i + 4] = BvhBuilder.up(a.maxY); box[6 * i + 5] = BvhBuilder.up(a.maxZ);
+                box[6 * i] = BvhBuilder.key(BvhBuilder.down(a.minX));
+                box[6 * i + 1] = BvhBuilder.key(BvhBuilder.down(a.minY));
+                box[6 * i + 2] = BvhBuilder.key(BvhBuilder.down(a.minZ));
+                box[6 * i + 3] = BvhBuilder.key(BvhBuilder.up(a.maxX));
+                box[6 * i + 4] = BvhBuilder.key(BvhBuilder.up(a.maxY));
+                box[6 * i + 5] = BvhBuilder.key(BvhBuilder.up(a.maxZ));
                 bounded.add(s);
             } else {
                 unbounded.add(s);

@@ -35,7 +35,11 @@ final class BvhBuilder {
     /** Largest number of primitives a leaf reference can address. */
     static final int MAX_PRIMITIVES = 1 << 27;
 
-    final float[] primBox;     // 6 per slot, rounded outward; moved with the slot's primitive
+    /**
+     * 6 per slot, the box rounded outward to floats and kept as {@link #key}s (min x, y, z, max x, y, z); moved
+     * with the slot's primitive.
+     */
+    final int[] primKey;
     final float[] centroid;    // 3 per slot
     final int[] order;         // primitive ids in leaf (slot) order
     final int count;
@@ -53,34 +57,67 @@ final class BvhBuilder {
     }
 
     /**
-     * {@code box}: 6 floats (min xyz, max xyz) per primitive for the first {@code count}, each rounded
-     * outward from the primitive's double box ({@link #down}, {@link #up}); the builder keeps the array
-     * and reorders it.
+     * {@code key}: 6 per primitive for the first {@code count}, the {@link #key}s of its box (min xyz, max
+     * xyz) rounded outward to floats ({@link #down}, {@link #up}); the builder keeps the array and reorders it.
      */
-    BvhBuilder(float[] box, int count) {
+    BvhBuilder(int[] key, int count) {
         this.count = count;
         if (count > MAX_PRIMITIVES) {
             throw new IllegalArgumentException("too many primitives for one BVH: " + count + " (at most " + MAX_PRIMITIVES + ")");
         }
-        primBox = box;
+        primKey = key;
         centroid = new float[3 * count];
         order = new int[count];
         for (int i = 0; i < count; i++) {
-            centroid[3 * i] = 0.5f * box[6 * i] + 0.5f * box[6 * i + 3];
-            centroid[3 * i + 1] = 0.5f * box[6 * i + 1] + 0.5f * box[6 * i + 4];
-            centroid[3 * i + 2] = 0.5f * box[6 * i + 2] + 0.5f * box[6 * i + 5];
+            int o = 6 * i;
+            centroid[3 * i] = 0.5f * unkey(key[o]) + 0.5f * unkey(key[o + 3]);
+            centroid[3 * i + 1] = 0.5f * unkey(key[o + 1]) + 0.5f * unkey(key[o + 4]);
+            centroid[3 * i + 2] = 0.5f * unkey(key[o + 2]) + 0.5f * unkey(key[o + 5]);
             order[i] = i;
         }
     }
 
-    /** Double boxes rounded outward to floats. */
-    private static float[] rounded(double[] box) {
-        float[] f = new float[box.length];
+    /** Double boxes rounded outward to floats, as keys. */
+    private static int[] rounded(double[] box) {
+        int[] k = new int[box.length];
         for (int i = 0; i + 5 < box.length; i += 6) {
             for (int a = 0; a < 3; a++) {
-                f[i + a] = down(box[i + a]);
-                f[i + 3 + a] = up(box[i + 3 + a]);
+                k[i + a] = key(down(box[i + a]));
+                k[i + 3 + a] = key(up(box[i + 3 + a]));
             }
+        }
+        return k;
+    }
+
+    /**
+     * A float as an int that orders as the float does: the bits of a float of either zero as 0, of a
+     * positive one as they are, of a negative one with the bits below the sign flipped (then a larger
+     * magnitude is a smaller int). So the builder's minima and maxima are int comparisons, which the JIT
+     * compiles to conditional moves, C1 too, where a float comparison is a branch: binning a node's
+     * primitives compares each box with three bins' boxes, and those branches, taken at random as the
+     * boxes come, were the largest part of the build (docs/performance.md, issue 20, session 32). Not for
+     * NaN, which no box holds ({@link Bvh#build} takes finite boxes only). Both zeros are 0, so a bound of
+     * -0 comes back as +0: the same value in every box test, and the tree is the one float comparisons
+     * build.
+     */
+    static int key(float f) {
+        int b = Float.floatToRawIntBits(f == 0 ? 0f : f);
+        return b ^ ((b >> 31) & 0x7fffffff);
+    }
+
+    /** The float of a {@link #key}. */
+    static float unkey(int k) {
+        return Float.intBitsToFloat(k ^ ((k >> 31) & 0x7fffffff));
+    }
+
+    /** The key of +infinity, above every box's; of -infinity, below. */
+    private static final int KEY_MAX = key(Float.POSITIVE_INFINITY), KEY_MIN = key(Float.NEGATIVE_INFINITY);
+
+    /** The slots' boxes as floats, 6 a slot (min xyz, max xyz), for the tests. */
+    float[] primBoxes() {
+        float[] f = new float[6 * count];
+        for (int i = 0; i < f.length; i++) {
+            f[i] = unkey(primKey[i]);
         }
         return f;
     }
@@ -171,10 +208,10 @@ final class BvhBuilder {
     /** Per-thread scratch for binning, and each depth's split: the children's boxes and centroid bounds. */
     static final class Scratch {
         final int[] binCount = new int[3 * BINS];
+        final int[] binKey = new int[3 * BINS * 6];
         final float[] binBox = new float[3 * BINS * 6];
         final float[] rightArea = new float[BINS];
         final int[] rightCount = new int[BINS];
-        final float[] acc = new float[6];
         // result of the last split search
         int axis, bin, bins;
         float cost;
@@ -300,21 +337,20 @@ final class BvhBuilder {
     }
 
     /** Finds the cheapest binned SAH split over all axes into {@code s}; false when there is none. */
-    private boolean findSplit(int start, int end, float[] cent, int co, Scratch s) {
-        int[] cnt = s.binCount;
+    boolean findSplit(int start, int end, float[] cent, int co, Scratch s) {
+        int[] cnt = s.binCount, bk = s.binKey;
         float[] bb = s.binBox;
         // small nodes get fewer bins: the fixed cost of a search (clearing and sweeping the bins) would
         // otherwise dominate, there being about as many small nodes as primitives
         int nb = Math.min(BINS, Math.max(2, end - start));
         s.bins = nb;
-        for (int i = 0; i < 3 * BINS; i++) {
-            if (i % BINS >= nb) {
-                continue;
+        for (int a = 0; a < 3 * BINS; a += BINS) {
+            for (int i = a; i < a + nb; i++) {
+                cnt[i] = 0;
+                int o = 6 * i;
+                bk[o] = bk[o + 1] = bk[o + 2] = KEY_MAX;
+                bk[o + 3] = bk[o + 4] = bk[o + 5] = KEY_MIN;
             }
-            cnt[i] = 0;
-            int o = 6 * i;
-            bb[o] = bb[o + 1] = bb[o + 2] = Float.POSITIVE_INFINITY;
-            bb[o + 3] = bb[o + 4] = bb[o + 5] = Float.NEGATIVE_INFINITY;
         }
         float lx = cent[co], ly = cent[co + 1], lz = cent[co + 2];
         float ex = cent[co + 3] - lx, ey = cent[co + 4] - ly, ez = cent[co + 5] - lz;
@@ -322,38 +358,47 @@ final class BvhBuilder {
         if (sx == 0 && sy == 0 && sz == 0) {
             return false;
         }
-        float[] pb = primBox, pc = centroid;
-        // one pass bins all three axes (the box growing written out: C1 would not inline it)
+        int[] pk = primKey;
+        float[] pc = centroid;
+        // one pass bins all three axes, the boxes' keys as conditional moves (key; the box growing written
+        // out: C1 would not inline it)
         for (int i = start; i < end; i++) {
             int q = 6 * i, c = 3 * i;
-            float x0 = pb[q], y0 = pb[q + 1], z0 = pb[q + 2], x1 = pb[q + 3], y1 = pb[q + 4], z1 = pb[q + 5];
+            int x0 = pk[q], y0 = pk[q + 1], z0 = pk[q + 2], x1 = pk[q + 3], y1 = pk[q + 4], z1 = pk[q + 5];
             int bx = binOf(pc[c], lx, sx, nb), by = BINS + binOf(pc[c + 1], ly, sy, nb), bz = 2 * BINS + binOf(pc[c + 2], lz, sz, nb);
             cnt[bx]++;
             cnt[by]++;
             cnt[bz]++;
-            int o = 6 * bx;
-            if (x0 < bb[o]) bb[o] = x0;
-            if (y0 < bb[o + 1]) bb[o + 1] = y0;
-            if (z0 < bb[o + 2]) bb[o + 2] = z0;
-            if (x1 > bb[o + 3]) bb[o + 3] = x1;
-            if (y1 > bb[o + 4]) bb[o + 4] = y1;
-            if (z1 > bb[o + 5]) bb[o + 5] = z1;
+            int o = 6 * bx, v;
+            v = bk[o]; bk[o] = x0 < v ? x0 : v;
+            v = bk[o + 1]; bk[o + 1] = y0 < v ? y0 : v;
+            v = bk[o + 2]; bk[o + 2] = z0 < v ? z0 : v;
+            v = bk[o + 3]; bk[o + 3] = x1 > v ? x1 : v;
+            v = bk[o + 4]; bk[o + 4] = y1 > v ? y1 : v;
+            v = bk[o + 5]; bk[o + 5] = z1 > v ? z1 : v;
             o = 6 * by;
-            if (x0 < bb[o]) bb[o] = x0;
-            if (y0 < bb[o + 1]) bb[o + 1] = y0;
-            if (z0 < bb[o + 2]) bb[o + 2] = z0;
-            if (x1 > bb[o + 3]) bb[o + 3] = x1;
-            if (y1 > bb[o + 4]) bb[o + 4] = y1;
-            if (z1 > bb[o + 5]) bb[o + 5] = z1;
+            v = bk[o]; bk[o] = x0 < v ? x0 : v;
+            v = bk[o + 1]; bk[o + 1] = y0 < v ? y0 : v;
+            v = bk[o + 2]; bk[o + 2] = z0 < v ? z0 : v;
+            v = bk[o + 3]; bk[o + 3] = x1 > v ? x1 : v;
+            v = bk[o + 4]; bk[o + 4] = y1 > v ? y1 : v;
+            v = bk[o + 5]; bk[o + 5] = z1 > v ? z1 : v;
             o = 6 * bz;
-            if (x0 < bb[o]) bb[o] = x0;
-            if (y0 < bb[o + 1]) bb[o + 1] = y0;
-            if (z0 < bb[o + 2]) bb[o + 2] = z0;
-            if (x1 > bb[o + 3]) bb[o + 3] = x1;
-            if (y1 > bb[o + 4]) bb[o + 4] = y1;
-            if (z1 > bb[o + 5]) bb[o + 5] = z1;
+            v = bk[o]; bk[o] = x0 < v ? x0 : v;
+            v = bk[o + 1]; bk[o + 1] = y0 < v ? y0 : v;
+            v = bk[o + 2]; bk[o + 2] = z0 < v ? z0 : v;
+            v = bk[o + 3]; bk[o + 3] = x1 > v ? x1 : v;
+            v = bk[o + 4]; bk[o + 4] = y1 > v ? y1 : v;
+            v = bk[o + 5]; bk[o + 5] = z1 > v ? z1 : v;
         }
-        float best = Float.POSITIVE_INFINITY;
+        // the bins' boxes as floats, for the sweeps' areas and the children's boxes
+        for (int a = 0; a < 3 * BINS; a += BINS) {
+            for (int j = 6 * a; j < 6 * (a + nb); j++) {
+                int k = bk[j];
+                bb[j] = Float.intBitsToFloat(k ^ ((k >> 31) & 0x7fffffff));   // unkey, written out for C1
+            }
+        }
+        float best = Float.POSITIVE_INFINITY, parentArea = Float.NaN;
         int bestAxis = -1, bestBin = -1;
         float[] rightArea = s.rightArea;
         int[] rightCount = s.rightCount;
@@ -402,18 +447,22 @@ final class BvhBuilder {
                     bestBin = i;
                 }
             }
+            if (parentArea != parentArea) {
+                // the parent's box is the union of any axis's bins: the left sweep's (0 .. nb - 2) and the last
+                int o = 6 * (base + nb - 1);
+                if (bb[o] < x0) x0 = bb[o];
+                if (bb[o + 1] < y0) y0 = bb[o + 1];
+                if (bb[o + 2] < z0) z0 = bb[o + 2];
+                if (bb[o + 3] > x1) x1 = bb[o + 3];
+                if (bb[o + 4] > y1) y1 = bb[o + 4];
+                if (bb[o + 5] > z1) z1 = bb[o + 5];
+                float wx = x1 - x0, wy = y1 - y0, wz = z1 - z0;
+                parentArea = wx * wy + wy * wz + wz * wx;
+            }
         }
         if (bestAxis < 0) {
             return false;
         }
-        // the parent's box is the union of any axis's bins
-        float[] acc = s.acc;
-        empty(acc, 0);
-        int base = bestAxis * BINS;
-        for (int i = 0; i < nb; i++) {
-            growBox(acc, 0, bb, 6 * (base + i));
-        }
-        float parentArea = area(acc);
         s.axis = bestAxis;
         s.bin = bestBin;
         s.cost = parentArea > 0 ? TRAVERSAL_COST + best / parentArea : TRAVERSAL_COST + (end - start);
@@ -435,8 +484,8 @@ final class BvhBuilder {
         for (int i = 0; i < nb; i++) {
             growBox(k, i <= split ? LB : RB, bb, 6 * (axis * BINS + i));
         }
-        float[] pc = centroid, pb = primBox;
-        int[] ord = order;
+        float[] pc = centroid;
+        int[] pk = primKey, ord = order;
         float lcx0 = Float.POSITIVE_INFINITY, lcy0 = lcx0, lcz0 = lcx0, lcx1 = Float.NEGATIVE_INFINITY, lcy1 = lcx1, lcz1 = lcx1;
         float rcx0 = lcx0, rcy0 = lcx0, rcz0 = lcx0, rcx1 = lcx1, rcy1 = lcx1, rcz1 = lcx1;
         int i = start, j = end - 1;
@@ -462,9 +511,9 @@ final class BvhBuilder {
                 ord[i] = ord[j];
                 ord[j] = t;
                 for (int q = 0; q < 6; q++) {
-                    float f = pb[6 * i + q];
-                    pb[6 * i + q] = pb[6 * j + q];
-                    pb[6 * j + q] = f;
+                    int f = pk[6 * i + q];
+                    pk[6 * i + q] = pk[6 * j + q];
+                    pk[6 * j + q] = f;
                 }
                 for (int q = 0; q < 3; q++) {
                     float f = pc[3 * i + q];
@@ -480,11 +529,13 @@ final class BvhBuilder {
     }
 
     /** Box and centroid bounds of slots [start, end), into {@code box[bo, bo + 6)} and {@code cent[co, co + 6)}. */
-    private void bounds(int start, int end, float[] box, int bo, float[] cent, int co) {
+    void bounds(int start, int end, float[] box, int bo, float[] cent, int co) {
         empty(box, bo);
         empty(cent, co);
+        int[] pk = primKey;
         for (int i = start; i < end; i++) {
-            growBox(box, bo, primBox, 6 * i);
+            int o = 6 * i;
+            grow(box, bo, unkey(pk[o]), unkey(pk[o + 1]), unkey(pk[o + 2]), unkey(pk[o + 3]), unkey(pk[o + 4]), unkey(pk[o + 5]));
             growPoint(cent, co, centroid, 3 * i);
         }
     }
@@ -510,11 +561,6 @@ final class BvhBuilder {
     private static void growPoint(float[] b, int o, float[] src, int so) {
         float x = src[so], y = src[so + 1], z = src[so + 2];
         grow(b, o, x, y, z, x, y, z);
-    }
-
-    private static float area(float[] b) {
-        float x = b[3] - b[0], y = b[4] - b[1], z = b[5] - b[2];
-        return x * y + y * z + z * x;
     }
 
     /** The largest float not above x. */

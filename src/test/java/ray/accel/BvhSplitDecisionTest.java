@@ -24,8 +24,17 @@ class BvhSplitDecisionTest {
 
     private static final long SEED = 20261202L;
 
+    /** The cost of the split {@link #expected} found last (NaN when it found none). */
+    private static float lastCost;
+
     /** One decision: a leaf, or the slot where the right child starts. */
     private static int expected(BvhBuilder b, int start, int end, int depth, String what) {
+        return expected(b, start, end, depth, what, true);
+    }
+
+    /** {@link #expected}, checking that the slots are partitioned at the split only when {@code sides}. */
+    private static int expected(BvhBuilder b, int start, int end, int depth, String what, boolean sides) {
+        lastCost = Float.NaN;
         int n = end - start;
         if (n == 1) {
             return -1;
@@ -33,7 +42,7 @@ class BvhSplitDecisionTest {
         if (depth >= BvhBuilder.SAH_DEPTH) {
             return start + n / 2;   // past the SAH depth: halving by count, down to single primitives
         }
-        float[] pb = b.primBox;
+        float[] pb = b.primBoxes();
         float[] cent = new float[3 * n];
         float[] lo = {Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY};
         float[] hi = {Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY};
@@ -97,7 +106,8 @@ class BvhSplitDecisionTest {
         }
         float parentArea = area(all);
         float cost = parentArea > 0 ? BvhBuilder.TRAVERSAL_COST + best / parentArea : BvhBuilder.TRAVERSAL_COST + n;
-        if (n <= BvhBuilder.MAX_LEAF && n <= cost) {
+        lastCost = cost;
+        if (n <= BvhBuilder.MAX_LEAF && n <= cost || !sides) {
             return -1;
         }
         // the left child is every primitive whose centroid falls in a bin <= bestBin on bestAxis
@@ -168,12 +178,13 @@ class BvhSplitDecisionTest {
         BvhBuilder b = new BvhBuilder(box.clone());
         b.build();
         // the slots hold the input's boxes rounded outward to floats, moved along with their ids
+        float[] pb = b.primBoxes();
         for (int i = 0; i < n; i++) {
             int id = b.order[i];
             for (int q = 0; q < 3; q++) {
-                assertEquals(BvhBuilder.down(box[6 * id + q]), b.primBox[6 * i + q], 0, what);
-                assertEquals(BvhBuilder.up(box[6 * id + 3 + q]), b.primBox[6 * i + 3 + q], 0, what);
-                assertTrue(b.primBox[6 * i + q] <= box[6 * id + q] && b.primBox[6 * i + 3 + q] >= box[6 * id + 3 + q], what);
+                assertEquals(BvhBuilder.down(box[6 * id + q]), pb[6 * i + q], 0, what);
+                assertEquals(BvhBuilder.up(box[6 * id + 3 + q]), pb[6 * i + 3 + q], 0, what);
+                assertTrue(pb[6 * i + q] <= box[6 * id + q] && pb[6 * i + 3 + q] >= box[6 * id + 3 + q], what);
             }
         }
         check(b, b.root, 0, n, 0, what);
@@ -210,6 +221,17 @@ class BvhSplitDecisionTest {
                     x = 10 * r.nextDouble(); y = 0; z = 0;
                     ex = 0; ey = 0; ez = 0;
                 }
+                case 6 -> {   // long boxes reaching back below every small one: the box whose centroid is the
+                              // largest (the last bin) holds the node's smallest corner, so a parent box taken from
+                              // fewer than all the bins is too small
+                    boolean wide = r.nextInt(4) == 0;
+                    x = wide ? -r.nextDouble() : 2 + 8 * r.nextDouble();
+                    y = wide ? -r.nextDouble() : 2 + 8 * r.nextDouble();
+                    z = wide ? -r.nextDouble() : 2 + 8 * r.nextDouble();
+                    ex = wide ? 30 + r.nextDouble() : 0.5 * r.nextDouble();
+                    ey = wide ? 30 + r.nextDouble() : 0.5 * r.nextDouble();
+                    ez = wide ? 30 + r.nextDouble() : 0.5 * r.nextDouble();
+                }
                 default -> {   // large overlapping boxes (leaves pay) with a few small ones
                     x = r.nextDouble(); y = r.nextDouble(); z = r.nextDouble();
                     boolean big = r.nextInt(4) != 0;
@@ -222,16 +244,44 @@ class BvhSplitDecisionTest {
         return b;
     }
 
-    /** Small sets (the leaf-or-split decisions) and larger ones (several levels), of seven kinds. */
+    /** Small sets (the leaf-or-split decisions) and larger ones (several levels), of eight kinds. */
     @Test
     void everyNodeIsTheBinnedSahDecisionForItsPrimitives() {
         Random r = new Random(SEED);
         int[] sizes = {2, 3, 4, 5, 6, 7, 8, 9, 12, 16, 17, 30, 64, 200, 1000};
-        for (int kind = 0; kind < 7; kind++) {
+        for (int kind = 0; kind < 8; kind++) {
             for (int n : sizes) {
                 for (int rep = 0; rep < (n < 100 ? 6 : 1); rep++) {
                     long seed = r.nextLong();
                     checkTree(random(new Random(seed), n, kind), "(kind " + kind + ", n " + n + ", seed " + seed + ")");
+                }
+            }
+        }
+    }
+
+    /**
+     * The cost the builder's split search gives a node is the restated rule's, to the bit: the decisions
+     * above agree as long as a wrong cost stays on the same side of a leaf's, so this checks the number
+     * itself (a parent area taken from too few bins, say, moves it), on the root of small seeded sets.
+     */
+    @Test
+    void theSearchsCostIsTheRestatedOne() {
+        Random r = new Random(SEED + 1);
+        for (int kind = 0; kind < 8; kind++) {
+            for (int n = 2; n <= 17; n++) {
+                for (int rep = 0; rep < 12; rep++) {
+                    long seed = r.nextLong();
+                    String what = "(kind " + kind + ", n " + n + ", seed " + seed + ")";
+                    BvhBuilder b = new BvhBuilder(random(new Random(seed), n, kind));
+                    float[] box = new float[6], cent = new float[6];
+                    b.bounds(0, n, box, 0, cent, 0);
+                    BvhBuilder.Scratch sc = new BvhBuilder.Scratch();
+                    boolean found = b.findSplit(0, n, cent, 0, sc);
+                    expected(b, 0, n, 0, what, false);
+                    assertEquals(lastCost == lastCost, found, "a split found " + what);
+                    if (found) {
+                        assertEquals(Float.floatToIntBits(lastCost), Float.floatToIntBits(sc.cost), "cost " + lastCost + " vs " + sc.cost + " " + what);
+                    }
                 }
             }
         }

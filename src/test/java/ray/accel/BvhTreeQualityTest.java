@@ -108,8 +108,8 @@ class BvhTreeQualityTest {
 
     private static void unionSlot(float[] u, BvhBuilder b, int slot) {
         for (int q = 0; q < 3; q++) {
-            u[q] = Math.min(u[q], b.primBox[6 * slot + q]);
-            u[3 + q] = Math.max(u[3 + q], b.primBox[6 * slot + 3 + q]);
+            u[q] = Math.min(u[q], BvhBuilder.unkey(b.primKey[6 * slot + q]));
+            u[3 + q] = Math.max(u[3 + q], BvhBuilder.unkey(b.primKey[6 * slot + 3 + q]));
         }
     }
 
