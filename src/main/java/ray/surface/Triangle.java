@@ -173,14 +173,24 @@ public class Triangle extends Surface {
      */
     private static double hit(double ax, double ay, double az, double bx, double by, double bz, double cx, double cy,
                               double cz, double sx, double sy, double sz, double tMin, double tMax, double[] bary, int at) {
-        // shear so the ray runs along +z
-        double pax = sx * az, pay = sy * az, pbx = sx * bz, pby = sy * bz, pcx = sx * cz, pcy = sy * cz;
-        double qax = ax - pax, qay = ay - pay, qbx = bx - pbx, qby = by - pby, qcx = cx - pcx, qcy = cy - pcy;
-        // edge functions; the front side gives all three >= 0
+        // shear so the ray runs along +z, and the edge functions; the front side gives all three >= 0. Each
+        // is tested as soon as it is known, a's shear only after the first: most triangles a ray is tested
+        // against fail one, and C1 (a short render's compiler) runs the lines in this order, where C2
+        // would have moved the later ones past the first test itself. The same numbers in every case
+        double pbx = sx * bz, pby = sy * bz, pcx = sx * cz, pcy = sy * cz;
+        double qbx = bx - pbx, qby = by - pby, qcx = cx - pcx, qcy = cy - pcy;
         double u = qcx * qby - qcy * qbx;
+        if (u < 0) {
+            return Double.NaN;
+        }
+        double pax = sx * az, pay = sy * az;
+        double qax = ax - pax, qay = ay - pay;
         double w0 = qax * qcy - qay * qcx;
+        if (w0 < 0) {
+            return Double.NaN;
+        }
         double w1 = qbx * qay - qby * qax;
-        if (u < 0 || w0 < 0 || w1 < 0) {
+        if (w1 < 0) {
             return Double.NaN;
         }
         double det = u + w0 + w1;
