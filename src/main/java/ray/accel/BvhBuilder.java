@@ -360,8 +360,8 @@ final class BvhBuilder {
         }
         int[] pk = primKey;
         float[] pc = centroid;
-        // one pass bins all three axes, the boxes' keys as conditional moves (key; the box growing written
-        // out: C1 would not inline it)
+        // one pass bins all three axes; each bin's box grows by conditional moves on keys (written out three
+        // times: C1 would not inline a helper this size)
         for (int i = start; i < end; i++) {
             int q = 6 * i, c = 3 * i;
             int x0 = pk[q], y0 = pk[q + 1], z0 = pk[q + 2], x1 = pk[q + 3], y1 = pk[q + 4], z1 = pk[q + 5];
@@ -394,8 +394,7 @@ final class BvhBuilder {
         // the bins' boxes as floats, for the sweeps' areas and the children's boxes
         for (int a = 0; a < 3 * BINS; a += BINS) {
             for (int j = 6 * a; j < 6 * (a + nb); j++) {
-                int k = bk[j];
-                bb[j] = Float.intBitsToFloat(k ^ ((k >> 31) & 0x7fffffff));   // unkey, written out for C1
+                bb[j] = unkey(bk[j]);
             }
         }
         float best = Float.POSITIVE_INFINITY, parentArea = Float.NaN;
