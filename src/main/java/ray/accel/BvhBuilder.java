@@ -92,10 +92,10 @@ final class BvhBuilder {
     /**
      * A float as an int that orders as the float does: the bits of a float of either zero as 0, of a
      * positive one as they are, of a negative one with the bits below the sign flipped (then a larger
-     * magnitude is a smaller int). So the builder's minima and maxima are int comparisons, which the JIT
-     * compiles to conditional moves, C1 too, where a float comparison is a branch: binning a node's
-     * primitives compares each box with three bins' boxes, and those branches, taken at random as the
-     * boxes come, were the largest part of the build (docs/performance.md, issue 20, session 32). Not for
+     * magnitude is a smaller int). So the builder's minima and maxima are int minima and maxima, which the
+     * JIT compiles to conditional moves where a float comparison is a branch: binning a node's primitives
+     * compares each box with three bins' boxes, and those branches, taken at random as the boxes come, were
+     * the largest part of the build (docs/performance.md, issue 20, sessions 32 and 33). Not for
      * NaN, which no box holds ({@link Bvh#build} takes finite boxes only). Both zeros are 0, so a bound of
      * -0 comes back as +0: the same value in every box test, and the tree is the one float comparisons
      * build.
@@ -361,7 +361,10 @@ final class BvhBuilder {
         int[] pk = primKey;
         float[] pc = centroid;
         // one pass bins all three axes; each bin's box grows by conditional moves on keys (written out three
-        // times: C1 would not inline a helper this size)
+        // times: C1 would not inline a helper this size). Math.min and max, not a ternary: C2 compiles an int
+        // ternary by its profile, to a branch where one side is rare (most primitives do not grow a bin's
+        // box, and the rest mispredict), while its Math.min is a conditional move always; C1 inlines Math.min
+        // and compiles it as it does the ternary
         for (int i = start; i < end; i++) {
             int q = 6 * i, c = 3 * i;
             int x0 = pk[q], y0 = pk[q + 1], z0 = pk[q + 2], x1 = pk[q + 3], y1 = pk[q + 4], z1 = pk[q + 5];
@@ -369,27 +372,27 @@ final class BvhBuilder {
             cnt[bx]++;
             cnt[by]++;
             cnt[bz]++;
-            int o = 6 * bx, v;
-            v = bk[o]; bk[o] = x0 < v ? x0 : v;
-            v = bk[o + 1]; bk[o + 1] = y0 < v ? y0 : v;
-            v = bk[o + 2]; bk[o + 2] = z0 < v ? z0 : v;
-            v = bk[o + 3]; bk[o + 3] = x1 > v ? x1 : v;
-            v = bk[o + 4]; bk[o + 4] = y1 > v ? y1 : v;
-            v = bk[o + 5]; bk[o + 5] = z1 > v ? z1 : v;
+            int o = 6 * bx;
+            bk[o] = Math.min(x0, bk[o]);
+            bk[o + 1] = Math.min(y0, bk[o + 1]);
+            bk[o + 2] = Math.min(z0, bk[o + 2]);
+            bk[o + 3] = Math.max(x1, bk[o + 3]);
+            bk[o + 4] = Math.max(y1, bk[o + 4]);
+            bk[o + 5] = Math.max(z1, bk[o + 5]);
             o = 6 * by;
-            v = bk[o]; bk[o] = x0 < v ? x0 : v;
-            v = bk[o + 1]; bk[o + 1] = y0 < v ? y0 : v;
-            v = bk[o + 2]; bk[o + 2] = z0 < v ? z0 : v;
-            v = bk[o + 3]; bk[o + 3] = x1 > v ? x1 : v;
-            v = bk[o + 4]; bk[o + 4] = y1 > v ? y1 : v;
-            v = bk[o + 5]; bk[o + 5] = z1 > v ? z1 : v;
+            bk[o] = Math.min(x0, bk[o]);
+            bk[o + 1] = Math.min(y0, bk[o + 1]);
+            bk[o + 2] = Math.min(z0, bk[o + 2]);
+            bk[o + 3] = Math.max(x1, bk[o + 3]);
+            bk[o + 4] = Math.max(y1, bk[o + 4]);
+            bk[o + 5] = Math.max(z1, bk[o + 5]);
             o = 6 * bz;
-            v = bk[o]; bk[o] = x0 < v ? x0 : v;
-            v = bk[o + 1]; bk[o + 1] = y0 < v ? y0 : v;
-            v = bk[o + 2]; bk[o + 2] = z0 < v ? z0 : v;
-            v = bk[o + 3]; bk[o + 3] = x1 > v ? x1 : v;
-            v = bk[o + 4]; bk[o + 4] = y1 > v ? y1 : v;
-            v = bk[o + 5]; bk[o + 5] = z1 > v ? z1 : v;
+            bk[o] = Math.min(x0, bk[o]);
+            bk[o + 1] = Math.min(y0, bk[o + 1]);
+            bk[o + 2] = Math.min(z0, bk[o + 2]);
+            bk[o + 3] = Math.max(x1, bk[o + 3]);
+            bk[o + 4] = Math.max(y1, bk[o + 4]);
+            bk[o + 5] = Math.max(z1, bk[o + 5]);
         }
         // the bins' boxes as floats, for the sweeps' areas and the children's boxes
         for (int a = 0; a < 3 * BINS; a += BINS) {
