@@ -209,7 +209,6 @@ final class BvhBuilder {
     static final class Scratch {
         final int[] binCount = new int[3 * BINS];
         final int[] binKey = new int[3 * BINS * 6];
-        final float[] binBox = new float[3 * BINS * 6];
         final float[] rightArea = new float[BINS];
         final int[] rightCount = new int[BINS];
         // result of the last split search
@@ -339,7 +338,6 @@ final class BvhBuilder {
     /** Finds the cheapest binned SAH split over all axes into {@code s}; false when there is none. */
     boolean findSplit(int start, int end, float[] cent, int co, Scratch s) {
         int[] cnt = s.binCount, bk = s.binKey;
-        float[] bb = s.binBox;
         // small nodes get fewer bins: the fixed cost of a search (clearing and sweeping the bins) would
         // otherwise dominate, there being about as many small nodes as primitives
         int nb = Math.min(BINS, Math.max(2, end - start));
@@ -394,12 +392,6 @@ final class BvhBuilder {
             bk[o + 4] = Math.max(y1, bk[o + 4]);
             bk[o + 5] = Math.max(z1, bk[o + 5]);
         }
-        // the bins' boxes as floats, for the sweeps' areas and the children's boxes
-        for (int a = 0; a < 3 * BINS; a += BINS) {
-            for (int j = 6 * a; j < 6 * (a + nb); j++) {
-                bb[j] = unkey(bk[j]);
-            }
-        }
         float best = Float.POSITIVE_INFINITY, parentArea = Float.NaN;
         int bestAxis = -1, bestBin = -1;
         float[] rightArea = s.rightArea;
@@ -409,39 +401,41 @@ final class BvhBuilder {
                 continue;
             }
             int base = a * BINS;
-            // sweep from the right, then from the left (the growing box in locals: C1 keeps calls)
-            float x0 = Float.POSITIVE_INFINITY, y0 = x0, z0 = x0, x1 = Float.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
+            // sweep from the right, then from the left, the growing box in locals (C1 keeps calls) as keys, by
+            // the same conditional moves as the binning; a key's float is the bins' float (keys order as
+            // floats, and a bin never holds -0), so the areas are those of the floats' boxes
+            int x0 = KEY_MAX, y0 = x0, z0 = x0, x1 = KEY_MIN, y1 = x1, z1 = x1;
             int c = 0;
             for (int i = nb - 1; i > 0; i--) {
                 int o = 6 * (base + i);
-                if (bb[o] < x0) x0 = bb[o];
-                if (bb[o + 1] < y0) y0 = bb[o + 1];
-                if (bb[o + 2] < z0) z0 = bb[o + 2];
-                if (bb[o + 3] > x1) x1 = bb[o + 3];
-                if (bb[o + 4] > y1) y1 = bb[o + 4];
-                if (bb[o + 5] > z1) z1 = bb[o + 5];
+                x0 = Math.min(x0, bk[o]);
+                y0 = Math.min(y0, bk[o + 1]);
+                z0 = Math.min(z0, bk[o + 2]);
+                x1 = Math.max(x1, bk[o + 3]);
+                y1 = Math.max(y1, bk[o + 4]);
+                z1 = Math.max(z1, bk[o + 5]);
                 c += cnt[base + i];
-                float wx = x1 - x0, wy = y1 - y0, wz = z1 - z0;
+                float wx = unkey(x1) - unkey(x0), wy = unkey(y1) - unkey(y0), wz = unkey(z1) - unkey(z0);
                 rightArea[i] = c > 0 ? wx * wy + wy * wz + wz * wx : 0;
                 rightCount[i] = c;
             }
-            x0 = y0 = z0 = Float.POSITIVE_INFINITY;
-            x1 = y1 = z1 = Float.NEGATIVE_INFINITY;
+            x0 = y0 = z0 = KEY_MAX;
+            x1 = y1 = z1 = KEY_MIN;
             c = 0;
             for (int i = 0; i < nb - 1; i++) {
                 int o = 6 * (base + i);
-                if (bb[o] < x0) x0 = bb[o];
-                if (bb[o + 1] < y0) y0 = bb[o + 1];
-                if (bb[o + 2] < z0) z0 = bb[o + 2];
-                if (bb[o + 3] > x1) x1 = bb[o + 3];
-                if (bb[o + 4] > y1) y1 = bb[o + 4];
-                if (bb[o + 5] > z1) z1 = bb[o + 5];
+                x0 = Math.min(x0, bk[o]);
+                y0 = Math.min(y0, bk[o + 1]);
+                z0 = Math.min(z0, bk[o + 2]);
+                x1 = Math.max(x1, bk[o + 3]);
+                y1 = Math.max(y1, bk[o + 4]);
+                z1 = Math.max(z1, bk[o + 5]);
                 c += cnt[base + i];
                 int r = rightCount[i + 1];
                 if (c == 0 || r == 0) {
                     continue;
                 }
-                float wx = x1 - x0, wy = y1 - y0, wz = z1 - z0;
+                float wx = unkey(x1) - unkey(x0), wy = unkey(y1) - unkey(y0), wz = unkey(z1) - unkey(z0);
                 float cost = (wx * wy + wy * wz + wz * wx) * c + rightArea[i + 1] * r;
                 if (cost < best) {
                     best = cost;
@@ -452,13 +446,13 @@ final class BvhBuilder {
             if (parentArea != parentArea) {
                 // the parent's box is the union of any axis's bins: the left sweep's (0 .. nb - 2) and the last
                 int o = 6 * (base + nb - 1);
-                if (bb[o] < x0) x0 = bb[o];
-                if (bb[o + 1] < y0) y0 = bb[o + 1];
-                if (bb[o + 2] < z0) z0 = bb[o + 2];
-                if (bb[o + 3] > x1) x1 = bb[o + 3];
-                if (bb[o + 4] > y1) y1 = bb[o + 4];
-                if (bb[o + 5] > z1) z1 = bb[o + 5];
-                float wx = x1 - x0, wy = y1 - y0, wz = z1 - z0;
+                x0 = Math.min(x0, bk[o]);
+                y0 = Math.min(y0, bk[o + 1]);
+                z0 = Math.min(z0, bk[o + 2]);
+                x1 = Math.max(x1, bk[o + 3]);
+                y1 = Math.max(y1, bk[o + 4]);
+                z1 = Math.max(z1, bk[o + 5]);
+                float wx = unkey(x1) - unkey(x0), wy = unkey(y1) - unkey(y0), wz = unkey(z1) - unkey(z0);
                 parentArea = wx * wy + wy * wz + wz * wx;
             }
         }
@@ -480,11 +474,25 @@ final class BvhBuilder {
         float lo = cent[co + axis], ext = cent[co + 3 + axis] - lo;
         int nb = s.bins;
         float scale = nb * 0.99999f / ext;
-        float[] bb = s.binBox;
-        empty(k, LB);
-        empty(k, RB);
-        for (int i = 0; i < nb; i++) {
-            growBox(k, i <= split ? LB : RB, bb, 6 * (axis * BINS + i));
+        int[] bk = s.binKey;
+        // the children's boxes: the union of the split axis's bins on either side, as keys, then floats
+        for (int side = LB, from = 0, to = split + 1; side <= RB; side += RB - LB, from = split + 1, to = nb) {
+            int x0 = KEY_MAX, y0 = x0, z0 = x0, x1 = KEY_MIN, y1 = x1, z1 = x1;
+            for (int i = from; i < to; i++) {
+                int o = 6 * (axis * BINS + i);
+                x0 = Math.min(x0, bk[o]);
+                y0 = Math.min(y0, bk[o + 1]);
+                z0 = Math.min(z0, bk[o + 2]);
+                x1 = Math.max(x1, bk[o + 3]);
+                y1 = Math.max(y1, bk[o + 4]);
+                z1 = Math.max(z1, bk[o + 5]);
+            }
+            k[side] = unkey(x0);
+            k[side + 1] = unkey(y0);
+            k[side + 2] = unkey(z0);
+            k[side + 3] = unkey(x1);
+            k[side + 4] = unkey(y1);
+            k[side + 5] = unkey(z1);
         }
         float[] pc = centroid;
         int[] pk = primKey, ord = order;
@@ -554,10 +562,6 @@ final class BvhBuilder {
         if (x1 > b[o + 3]) b[o + 3] = x1;
         if (y1 > b[o + 4]) b[o + 4] = y1;
         if (z1 > b[o + 5]) b[o + 5] = z1;
-    }
-
-    private static void growBox(float[] b, int o, float[] src, int so) {
-        grow(b, o, src[so], src[so + 1], src[so + 2], src[so + 3], src[so + 4], src[so + 5]);
     }
 
     private static void growPoint(float[] b, int o, float[] src, int so) {
