@@ -20,7 +20,46 @@ final class Fields {
      * A field a scene names: its name (also as chars), the field, and the type keyword it takes (null:
      * none, a scene cannot set it) with the keyword's place in {@link Parser#TYPES} (-1 for none).
      */
-    record Entry(String name, char[] chars, Field field, String keyword, int type) {
+    record Entry(String name, char[] chars, Field field, String keyword, int type, int direct) {
+    }
+
+    /**
+     * {@link Entry#direct}: a field of the built-in classes a large scene sets line after line, which
+     * {@link #setDirect} stores without reflection (0: any other field, set by {@link Field#set}).
+     */
+    static final int TRIANGLE_V0 = 1, TRIANGLE_V1 = 2, TRIANGLE_V2 = 3, SPHERE_CENTER = 4, SPHERE_RADIUS = 5, SURFACE_MATERIAL = 6;
+
+    /** The {@link Entry#direct} of field {@code f}: by the class that declares it, so a subclass's object gets it too. */
+    private static int direct(Field f) {
+        Class<?> c = f.getDeclaringClass();
+        String n = f.getName();
+        if (c == ray.surface.Triangle.class) {
+            return n.equals("v0") ? TRIANGLE_V0 : n.equals("v1") ? TRIANGLE_V1 : n.equals("v2") ? TRIANGLE_V2 : 0;
+        }
+        if (c == ray.surface.Sphere.class) {
+            return n.equals("center") ? SPHERE_CENTER : n.equals("radius") ? SPHERE_RADIUS : 0;
+        }
+        return c == ray.surface.Surface.class && n.equals("material") ? SURFACE_MATERIAL : 0;
+    }
+
+    /**
+     * Stores {@code v} in the field {@code direct} names of {@code o}, as {@link Field#set} would, and
+     * returns true; false (nothing stored) for 0. {@code Field.set} checks the object's class and the
+     * value's on every call, two {@code Class.isAssignableFrom} calls, each a call into the VM under C1:
+     * a tenth of a 100,000-triangle scene's parse. Here both are known already: the field is the
+     * declaring class's own, looked up for the object's class, and the value is of the field's type
+     * (the parameter line's type keyword was checked against it, and a ref's object by
+     * {@code isInstance}).
+     */
+    static boolean setDirect(int direct, Object o, Object v) {
+        switch (direct) {
+            case TRIANGLE_V0: ((ray.surface.Triangle) o).v0 = (javax.vecmath.Vector3d) v; return true;
+            case TRIANGLE_V1: ((ray.surface.Triangle) o).v1 = (javax.vecmath.Vector3d) v; return true;
+            case TRIANGLE_V2: ((ray.surface.Triangle) o).v2 = (javax.vecmath.Vector3d) v; return true;
+            case SPHERE_CENTER: ((ray.surface.Sphere) o).center = (javax.vecmath.Vector3d) v; return true;
+            case SURFACE_MATERIAL: ((ray.surface.Surface) o).material = (ray.material.Material) v; return true;
+            default: return false;
+        }
     }
 
     private final Map<Class<?>, List<Entry>> cache = new HashMap<>();
@@ -75,7 +114,7 @@ final class Fields {
     private static Entry add(Class<?> c, List<Entry> entries, String name) throws Problem {
         Field f = lookUp(c, name);
         String k = keyword(f.getType());
-        Entry e = new Entry(name, name.toCharArray(), f, k, k == null ? -1 : Parser.TYPES.indexOf(k));
+        Entry e = new Entry(name, name.toCharArray(), f, k, k == null ? -1 : Parser.TYPES.indexOf(k), direct(f));
         entries.add(e);
         return e;
     }

@@ -72,6 +72,10 @@ final class Parameters {
         try {
             if (ft == double.class) {   // the common case, set without boxing
                 double d = Values.parseDouble(w.line, w.from2, w.end, name);
+                if (e.direct() == Fields.SPHERE_RADIUS) {
+                    ((ray.surface.Sphere) current).radius = d;   // as setDouble, without its check (Fields.setDirect)
+                    return;
+                }
                 try {
                     f.setDouble(current, d);
                 } catch (IllegalAccessException | RuntimeException x) {
@@ -80,6 +84,9 @@ final class Parameters {
                 return;
             }
             Object v = value(kind, name, ft, w);
+            if (Fields.setDirect(e.direct(), current, v)) {
+                return;
+            }
             try {
                 f.set(current, v);
             } catch (IllegalAccessException | RuntimeException x) {
