@@ -94,6 +94,12 @@ public final class Bvh implements Accelerator {
     private final PrimitiveSet unbounded;
     private final int primitives;
     private final long buildNanos;
+    /**
+     * Whether a build keeps its tree's {@link BvhBuilder#structureHash} ({@code -Dray.bvh.hash=true}, as
+     * {@code gradle buildTimes} runs; a constant the JIT folds): a pass over the tree a render has no use for.
+     */
+    static final boolean HASH = Boolean.getBoolean("ray.bvh.hash");
+    private final long structureHash;
 
     private Bvh(Scene scene, BvhBuilder b, List<Surface> bounded, List<Surface> unboundedList, long buildNanos, int wideNodes) {
         this.scene = scene;
@@ -104,6 +110,7 @@ public final class Bvh implements Accelerator {
         this.wide = root >= 0 && nodeCount >= wideNodes ? new Wide4(binary, root, nodeCount) : null;
         this.node = wide == null ? binary : null;
         this.buildNanos = buildNanos;
+        this.structureHash = HASH ? b.structureHash() : 0;
         this.primitives = bounded.size() + unboundedList.size();
         int n = b.order.length;
         // the set of each primitive, numbered in order of first appearance (deterministic)
@@ -292,6 +299,14 @@ public final class Bvh implements Accelerator {
     /** Wall time of {@link #build}, nanoseconds. */
     public long buildNanos() {
         return buildNanos;
+    }
+
+    /**
+     * The hash of the tree as built ({@link BvhBuilder#structureHash}: node boxes and references, and the
+     * primitive of each leaf slot), when the JVM runs with {@code -Dray.bvh.hash=true}; 0 otherwise.
+     */
+    public long structureHash() {
+        return structureHash;
     }
 
     /** Bytes held by the tree and its packed primitives (not the scene's Surface objects). */
