@@ -105,7 +105,12 @@ public final class BuildTimes {
         }
         List<Row> rows = new ArrayList<>();
         for (Path p : scenes) {
-            rows.add(measure(p, parses, builds));
+            try {
+                rows.add(measure(p, parses, builds));
+            } catch (ray.parse.SceneFormatException | java.io.IOException e) {
+                System.err.println(e.getMessage());   // a scene that does not read: its one line, as the renderer says it
+                System.exit(1);
+            }
         }
         System.out.println("JVM: " + String.join(" ", java.lang.management.ManagementFactory.getRuntimeMXBean().getInputArguments())
                 + "; " + Runtime.getRuntime().availableProcessors() + " processor(s)");

@@ -499,26 +499,8 @@ final class BvhBuilder {
         float lo = cent[co + axis], ext = cent[co + 3 + axis] - lo;
         int nb = s.bins;
         float scale = nb * 0.99999f / ext;
-        int[] bk = s.binKey;
-        // the children's boxes: the union of the split axis's bins on either side, as keys, then floats
-        for (int side = LB, from = 0, to = split + 1; side <= RB; side += RB - LB, from = split + 1, to = nb) {
-            int x0 = KEY_MAX, y0 = x0, z0 = x0, x1 = KEY_MIN, y1 = x1, z1 = x1;
-            for (int i = from; i < to; i++) {
-                int o = 6 * (axis * BINS + i);
-                x0 = Math.min(x0, bk[o]);
-                y0 = Math.min(y0, bk[o + 1]);
-                z0 = Math.min(z0, bk[o + 2]);
-                x1 = Math.max(x1, bk[o + 3]);
-                y1 = Math.max(y1, bk[o + 4]);
-                z1 = Math.max(z1, bk[o + 5]);
-            }
-            k[side] = unkey(x0);
-            k[side + 1] = unkey(y0);
-            k[side + 2] = unkey(z0);
-            k[side + 3] = unkey(x1);
-            k[side + 4] = unkey(y1);
-            k[side + 5] = unkey(z1);
-        }
+        binUnion(s.binKey, axis * BINS, 0, split + 1, k, LB);   // the children's boxes, from the split axis's bins
+        binUnion(s.binKey, axis * BINS, split + 1, nb, k, RB);
         float[] pc = centroid;
         int[] pk = primKey, ord = order;
         float lcx0 = Float.POSITIVE_INFINITY, lcy0 = lcx0, lcz0 = lcx0, lcx1 = Float.NEGATIVE_INFINITY, lcy1 = lcx1, lcz1 = lcx1;
@@ -561,6 +543,26 @@ final class BvhBuilder {
         k[LC] = lcx0; k[LC + 1] = lcy0; k[LC + 2] = lcz0; k[LC + 3] = lcx1; k[LC + 4] = lcy1; k[LC + 5] = lcz1;
         k[RC] = rcx0; k[RC + 1] = rcy0; k[RC + 2] = rcz0; k[RC + 3] = rcx1; k[RC + 4] = rcy1; k[RC + 5] = rcz1;
         return i;
+    }
+
+    /** The union of bins [from, to) from bin {@code base} on of the keys {@code bk}, as floats into {@code box[o, o + 6)}. */
+    private static void binUnion(int[] bk, int base, int from, int to, float[] box, int o) {
+        int x0 = KEY_MAX, y0 = x0, z0 = x0, x1 = KEY_MIN, y1 = x1, z1 = x1;
+        for (int i = from; i < to; i++) {
+            int b = 6 * (base + i);
+            x0 = Math.min(x0, bk[b]);
+            y0 = Math.min(y0, bk[b + 1]);
+            z0 = Math.min(z0, bk[b + 2]);
+            x1 = Math.max(x1, bk[b + 3]);
+            y1 = Math.max(y1, bk[b + 4]);
+            z1 = Math.max(z1, bk[b + 5]);
+        }
+        box[o] = unkey(x0);
+        box[o + 1] = unkey(y0);
+        box[o + 2] = unkey(z0);
+        box[o + 3] = unkey(x1);
+        box[o + 4] = unkey(y1);
+        box[o + 5] = unkey(z1);
     }
 
     /** Box and centroid bounds of slots [start, end), into {@code box[bo, bo + 6)} and {@code cent[co, co + 6)}. */

@@ -62,6 +62,15 @@ final class Fields {
         }
     }
 
+    /** {@link #setDirect(int, Object, Object)} for a double field, without boxing: as {@link Field#setDouble} would. */
+    static boolean setDirect(int direct, Object o, double v) {
+        if (direct == SPHERE_RADIUS) {
+            ((ray.surface.Sphere) o).radius = v;
+            return true;
+        }
+        return false;
+    }
+
     private final Map<Class<?>, List<Entry>> cache = new HashMap<>();
     /** The class last asked about and its entries: a large scene sets fields of one class line after line. */
     private Class<?> lastClass;

@@ -72,8 +72,7 @@ final class Parameters {
         try {
             if (ft == double.class) {   // the common case, set without boxing
                 double d = Values.parseDouble(w.line, w.from2, w.end, name);
-                if (e.direct() == Fields.SPHERE_RADIUS) {
-                    ((ray.surface.Sphere) current).radius = d;   // as setDouble, without its check (Fields.setDirect)
+                if (Fields.setDirect(e.direct(), current, d)) {
                     return;
                 }
                 try {

@@ -75,6 +75,11 @@ class FieldsDirectTest {
             }
         }
         assertEquals(Fields.SPHERE_RADIUS, fields.find(Sphere.class, "radius").direct());
+        Sphere p = new Sphere();
+        assertTrue(Fields.setDirect(Fields.SPHERE_RADIUS, p, 2.5));
+        assertEquals(2.5, p.radius);
+        assertFalse(Fields.setDirect(Fields.SPHERE_CENTER, p, 3.5));
+        assertEquals(2.5, p.radius);
     }
 
     @Test
