@@ -67,11 +67,6 @@ public final class Bvh implements Accelerator {
      * primitives) is one or two binary nodes, and there the wide traversal's set-up costs more than it saves.
      */
     static final int WIDE_NODES = Integer.getInteger("ray.bvh.wideNodes", 1024);
-    /**
-     * Primitives up to which a scene's camera packets are traced in vector lanes when {@link #WIDE}
-     * ({@link #lanes}): every primitive against four rays at a time, no tree.
-     */
-    static final int LANE_PRIMITIVES = Integer.getInteger("ray.bvh.lanePrimitives", 16);
 
     private final Scene scene;
     private final int root;
@@ -105,16 +100,8 @@ public final class Bvh implements Accelerator {
      */
     static final boolean HASH = Boolean.getBoolean("ray.bvh.hash");
     private final long structureHash;
-    /**
-     * Per set, its kernel in vector lanes ({@link LaneKernel}), when camera packets are traced that way:
-     * a tree of at most the builder's lane primitives, every set with such a kernel, no unbounded surface;
-     * else null. With it, {@link #laneSlots}: per set, the leaf slot of each of its primitives.
-     */
-    private final LaneKernel[] lanes;
-    private final int[][] laneSlots;
 
-    private Bvh(Scene scene, BvhBuilder b, List<Surface> bounded, List<Surface> unboundedList, long buildNanos, int wideNodes,
-                int lanePrimitives) {
+    private Bvh(Scene scene, BvhBuilder b, List<Surface> bounded, List<Surface> unboundedList, long buildNanos, int wideNodes) {
         this.scene = scene;
         this.root = b.root;
         this.rootBox = b.rootBox;
@@ -191,25 +178,6 @@ public final class Bvh implements Accelerator {
             unbounded = SurfaceSet.TYPE.pack(unboundedList);
             unbounded.id(sets.length);
         }
-        LaneKernel[] kernels = n > 0 && n <= lanePrimitives && unbounded == null ? new LaneKernel[sets.length] : null;
-        for (int t = 0; kernels != null && t < sets.length; t++) {
-            kernels[t] = sets[t].lanes();
-            if (kernels[t] == null) {
-                kernels = null;   // a set without lanes (a user's surfaces): the tree for every ray
-            }
-        }
-        lanes = kernels;
-        if (kernels != null) {
-            laneSlots = new int[sets.length][];
-            for (int t = 0; t < sets.length; t++) {
-                laneSlots[t] = new int[sets[t].size()];
-            }
-            for (int i = 0; i < n; i++) {
-                laneSlots[typeOf[order[i]]][index[i]] = i;
-            }
-        } else {
-            laneSlots = null;
-        }
     }
 
     private static PrimitiveSet.Type typeOf(Surface s) {
@@ -270,7 +238,7 @@ public final class Bvh implements Accelerator {
      * leaving out those that can never be hit.
      */
     public static Bvh build(List<Surface> sceneSurfaces, Scene scene) {
-        return build(sceneSurfaces, scene, WIDE ? WIDE_NODES : Integer.MAX_VALUE, WIDE ? LANE_PRIMITIVES : 0);
+        return build(sceneSurfaces, scene, WIDE ? WIDE_NODES : Integer.MAX_VALUE);
     }
 
     /**
@@ -278,15 +246,6 @@ public final class Bvh implements Accelerator {
      * {@code wideNodes} inner nodes (the module {@code jdk.incubator.vector} must then be present).
      */
     static Bvh build(List<Surface> sceneSurfaces, Scene scene, int wideNodes) {
-        return build(sceneSurfaces, scene, wideNodes, 0);
-    }
-
-    /**
-     * {@link #build(List, Scene, int)}, its camera packets traced in vector lanes ({@link LaneKernel}) when
-     * it has at most {@code lanePrimitives} primitives, all of sets that have lanes, and none unbounded (the
-     * module {@code jdk.incubator.vector} must be present when {@code lanePrimitives > 0}).
-     */
-    static Bvh build(List<Surface> sceneSurfaces, Scene scene, int wideNodes, int lanePrimitives) {
         long t0 = System.nanoTime();
         List<Surface> surfaces = new ArrayList<>(sceneSurfaces.size());
         for (Surface s : sceneSurfaces) {
@@ -320,17 +279,12 @@ public final class Bvh implements Accelerator {
         }
         BvhBuilder b = new BvhBuilder(box, bounded.size());
         b.build();
-        return new Bvh(scene, b, bounded, unbounded, System.nanoTime() - t0, wideNodes, lanePrimitives);
+        return new Bvh(scene, b, bounded, unbounded, System.nanoTime() - t0, wideNodes);
     }
 
     /** Whether this tree is traversed four boxes at a time ({@link Wide4}). */
     boolean isWide() {
         return wide != null;
-    }
-
-    /** Whether camera packets are traced in vector lanes ({@link #lanes}). */
-    boolean isLanes() {
-        return lanes != null;
     }
 
     /** Inner nodes (a tree of one leaf has none). */
@@ -502,7 +456,7 @@ public final class Bvh implements Accelerator {
 
     @Override
     public boolean packetsPay() {
-        return nodeCount >= PACKET_NODES || lanes != null;
+        return nodeCount >= PACKET_NODES;
     }
 
     /**
@@ -523,10 +477,6 @@ public final class Bvh implements Accelerator {
     public void closestHits(RayPacket p, TraceContext ctx) {
         int n = p.size;
         RayQuery q = query(ctx);
-        if (lanes != null && n > 0) {
-            laneHits(p, q);
-            return;
-        }
         if (n < 2 || root < 0) {
             Accelerator.super.closestHits(p, ctx);   // ray by ray
             return;
@@ -640,31 +590,6 @@ public final class Bvh implements Accelerator {
                 ref = stack[--sp];
                 box = stackBox[sp];
             } while (stackT[sp] > far * SLAB_SLACK);
-        }
-    }
-
-    /**
-     * A packet traced in vector lanes: each set's {@link LaneKernel} tests all its primitives against all
-     * the rays and offers each ray its nearest hit, so each ray ends with the nearest hit over all sets, at
-     * equal t the earliest slot: what its traversal finds, since the tree's box tests are conservative
-     * and {@link RayQuery#offer}'s tie rule does not depend on the order of tests ({@code LanesTest}).
-     */
-    private void laneHits(RayPacket p, RayQuery q) {
-        int n = p.size;
-        RayQuery[] queries = q.lanes(n);
-        for (int k = 0; k < n; k++) {
-            queries[k].start(p.rays[k], p.records[k]);
-        }
-        LaneRays r = q.laneRays();
-        r.load(queries, n);
-        if (COUNT) {
-            q.primitiveTests += (long) n * primitives;
-        }
-        for (int t = 0; t < lanes.length; t++) {
-            lanes[t].closestHits(r, laneSlots[t]);
-        }
-        for (int k = 0; k < n; k++) {
-            p.hit[k] = finish(queries[k], p.records[k]);
         }
     }
 

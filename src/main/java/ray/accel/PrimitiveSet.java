@@ -99,13 +99,4 @@ public abstract class PrimitiveSet {
 
     /** Bytes of packed data (for {@link Bvh#memoryBytes()}). */
     public abstract long memoryBytes();
-
-    /**
-     * This set's kernel over four rays at a time in vector lanes ({@link LaneKernel}), or null (the
-     * default): then a scene that holds this set is traced through its tree. Called once per BVH, and only
-     * when the JVM has loaded the Vector API's module.
-     */
-    public LaneKernel lanes() {
-        return null;
-    }
 }

@@ -58,8 +58,6 @@ public final class RayQuery {
     int[] stackBox;
     RayQuery[] lanes = new RayQuery[0];
     double[] laneIx, laneIy, laneIz;
-    /** A packet's rays laid out for the lane kernels ({@link Bvh}'s lanes). Made on first use. */
-    private LaneRays laneRays;
     final Bvh owner;
     /** Inner nodes visited and primitives tested (counted only with -Dray.bvh.count=true). */
     long nodeVisits, primitiveTests;
@@ -87,13 +85,6 @@ public final class RayQuery {
             }
         }
         return lanes;
-    }
-
-    LaneRays laneRays() {
-        if (laneRays == null) {
-            laneRays = new LaneRays();
-        }
-        return laneRays;
     }
 
     /** Starts a closest-hit query of {@code r}, to be filled into {@code rec}. */

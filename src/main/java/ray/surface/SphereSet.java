@@ -3,7 +3,6 @@ package ray.surface;
 import java.util.List;
 import ray.IntersectionRecord;
 import ray.accel.Aabb;
-import ray.accel.LaneKernel;
 import ray.accel.PrimitiveSet;
 import ray.accel.RayQuery;
 
@@ -66,12 +65,6 @@ final class SphereSet extends PrimitiveSet {
         int o = 4 * i;
         Sphere.fill(s[o], s[o + 1], s[o + 2], s[o + 3], q.ox, q.oy, q.oz, q.dx, q.dy, q.dz, q.tMax, rec);
         rec.surface = surfaces[i];
-    }
-
-    /** {@link SphereLanes}: the scalar kernel in four lanes (made only where the Vector API's module is loaded). */
-    @Override
-    public LaneKernel lanes() {
-        return new SphereLanes(this, s);
     }
 
     @Override

@@ -3,7 +3,6 @@ package ray.surface;
 import java.util.List;
 import ray.IntersectionRecord;
 import ray.accel.Aabb;
-import ray.accel.LaneKernel;
 import ray.accel.PrimitiveSet;
 import ray.accel.RayQuery;
 
@@ -114,12 +113,6 @@ final class TriangleSet extends PrimitiveSet {
             k[c + 4] = rec.error;
         }
         rec.surface = surfaces[i];
-    }
-
-    /** {@link TriangleLanes}: the scalar kernel in four lanes (made only where the Vector API's module is loaded). */
-    @Override
-    public LaneKernel lanes() {
-        return new TriangleLanes(this, v);
     }
 
     @Override
