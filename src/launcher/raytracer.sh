@@ -129,11 +129,24 @@ fi
 # -XX:CICompilerCount comes later and wins. A long render also renders a few pixels spread over the image
 # before its tiles (-Dray.render.warmUp=true, ray.render.Renderer.WARM_UP), so that the profiles C2 compiles
 # from are the whole image's, not its first tiles': fewer of those recompilations (classichd 0.95x the CPU).
+# Long: the BVH's build is never compiled by C2 (lib/c2-directives.json, a HotSpot compiler-directives file:
+# no C2 for ray.accel.BvhBuilder and its nested classes, the Bvh constructor's layout of the tree and
+# Wide4.collapse; JSON without comments, which the JVM's reader refuses before the array). It runs once, and
+# C2's code for it came too late to pay: on mesh1m C2 spent about 0.3 s compiling it, the build took as
+# long either way, and C2's threads were busy while the render's own methods waited (mesh1m 0.96x the CPU
+# time, docs/performance.md, "Issue 20, session 36"). The builder runs C1's code without profiling instead.
+# Diagnostic options, unlocked for that; the JVM prints "1 compiler directives added" on starting, and so
+# that it never lands in an image written to stdout (-o -) all of the JVM's own output goes to stderr,
+# where the JIT policy's relaunch drops that line. A user's later -XX:CompilerDirectivesFile wins.
 case ${RAYTRACER_JIT-} in
     long)
         case $(getconf _NPROCESSORS_ONLN 2>/dev/null) in
             [1-7]) set -- -XX:CICompilerCount=4 "$@" ;;
         esac
+        if [ -f "$APP_HOME/lib/c2-directives.json" ]; then
+            set -- -XX:+UnlockDiagnosticVMOptions -XX:+DisplayVMOutputToStderr \
+                "-XX:CompilerDirectivesFile=$APP_HOME/lib/c2-directives.json" "$@"
+        fi
         set -- -XX:TieredStopAtLevel=4 -Dray.render.warmUp=true "$@" ;;
     short) ;;
     *)

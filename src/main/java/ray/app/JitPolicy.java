@@ -207,8 +207,9 @@ final class JitPolicy {
     /**
      * Runs {@code launcher args} with {@code RAYTRACER_JIT=long} (and {@link #SIMD} where {@code wide}
      * and the module is there), this process's standard streams passed through (stderr through a
-     * {@link NoticeFilter} when the module is added), and returns its exit status; -1 when it could not be
-     * started (the caller renders here). A shutdown hook ends the child if this process is stopped first.
+     * {@link NoticeFilter}, which drops the JVM's start-up notices), and returns its exit status; -1 when it
+     * could not be started (the caller renders here). A shutdown hook ends the child if this process is
+     * stopped first.
      */
     static int relaunch(String launcher, String[] args, boolean wide) {
         List<String> cmd = new ArrayList<>(args.length + 1);
@@ -220,30 +221,23 @@ final class JitPolicy {
         if (wide && !pb.environment().containsKey(SIMD) && simdPays()) {
             pb.environment().put(SIMD, "1");
         }
-        boolean simd = "1".equals(pb.environment().get(SIMD));   // ours, or the user's own
-        if (simd) {
-            pb.redirectError(ProcessBuilder.Redirect.PIPE);   // through NoticeFilter
-            pb.environment().put("RAYTRACER_STDERR_TTY", Terminal.stderr() ? "true" : "false");
-        }
+        pb.redirectError(ProcessBuilder.Redirect.PIPE);   // through NoticeFilter
+        pb.environment().put("RAYTRACER_STDERR_TTY", Terminal.stderr() ? "true" : "false");
         Process p;
         try {
             p = pb.start();
         } catch (IOException | RuntimeException e) {
             return -1;
         }
-        NoticeFilter filter = simd ? new NoticeFilter(p.getErrorStream()) : null;
-        if (filter != null) {
-            filter.start();
-        }
+        NoticeFilter filter = new NoticeFilter(p.getErrorStream());
+        filter.start();
         Thread stop = new Thread(p::destroy, "raytracer-relaunch-stop");
         Runtime.getRuntime().addShutdownHook(stop);
         try {
             while (true) {
                 try {
                     int status = p.waitFor();
-                    if (filter != null) {
-                        filter.join();   // the child's last words are on this stderr before this process ends
-                    }
+                    filter.join();   // the child's last words are on this stderr before this process ends
                     return status;
                 } catch (InterruptedException e) {
                     p.destroy();   // this thread was asked to stop: so is the render it waits for
@@ -260,16 +254,28 @@ final class JitPolicy {
 
     /**
      * Copies a long render's stderr to this process's own, byte for byte as it comes (the progress line
-     * included), but for the JVM's notice of the incubator module ({@link #NOTICE}) when it is the first
-     * line: the launcher adds the module for the wide traversal ({@link #SIMD}), and the notice says
-     * nothing a user should act on.
+     * included), but for the JVM's own notices among its first lines, which say nothing a user should act
+     * on: that the incubator module is used ({@link #NOTICE}; the launcher adds it for the wide traversal,
+     * {@link #SIMD}) and how many compiler directives it read ({@link #DIRECTIVES}: the launcher's
+     * {@code lib/c2-directives.json}), in either order. A line that is neither ends the notices: it and
+     * everything after it pass unchanged.
      */
     static final class NoticeFilter extends Thread {
-        /** What the JVM prints first when the module is added ({@code ModuleBootstrap}, JDK 17-25). */
+        /** What the JVM prints when the module is added ({@code ModuleBootstrap}, JDK 17-25). */
         static final byte[] NOTICE = "WARNING: Using incubator modules: jdk.incubator.vector\n"
                 .getBytes(java.nio.charset.StandardCharsets.US_ASCII);
+        /**
+         * What the JVM prints after a count when it has read a compiler-directives file
+         * ({@code DirectivesParser}, JDK 9-25): "1 compiler directives added".
+         */
+        static final byte[] DIRECTIVES = " compiler directives added\n".getBytes(java.nio.charset.StandardCharsets.US_ASCII);
+        /** Digits of the count before {@link #DIRECTIVES}: more would be no notice of ours. */
+        private static final int COUNT_DIGITS = 4;
         private final java.io.InputStream in;
         private final java.io.OutputStream out;
+        /** The current first line so far, while it may still be a notice; its length is {@link #held}. */
+        private final byte[] line = new byte[Math.max(NOTICE.length, COUNT_DIGITS + DIRECTIVES.length)];
+        private int held;
 
         NoticeFilter(java.io.InputStream in) {
             this(in, new java.io.FileOutputStream(java.io.FileDescriptor.err));
@@ -285,31 +291,79 @@ final class JitPolicy {
         @Override
         public void run() {
             byte[] buf = new byte[8192];
-            int matched = 0;   // bytes of the notice read so far; -1 once decided
+            boolean notices = true;   // still among the leading notices
             try {
                 for (int n; (n = in.read(buf)) > 0; ) {
                     int from = 0;
-                    while (matched >= 0 && from < n) {
-                        if (buf[from] == NOTICE[matched]) {
-                            from++;
-                            if (++matched == NOTICE.length) {
-                                matched = -1;   // the notice, whole: dropped
-                            }
-                        } else {
-                            out.write(NOTICE, 0, matched);   // not the notice: what was held back, then the rest
-                            matched = -1;
+                    while (notices && from < n) {
+                        byte b = buf[from++];
+                        line[held++] = b;
+                        if (b == '\n' && isNotice(line, held)) {
+                            held = 0;   // a whole notice: dropped
+                        } else if (b == '\n' || !mayBeNotice(line, held)) {
+                            out.write(line, 0, held);   // not a notice: what was held back, then the rest
+                            held = 0;
+                            notices = false;
                         }
                     }
                     out.write(buf, from, n - from);
                     out.flush();
                 }
-                if (matched > 0) {
-                    out.write(NOTICE, 0, matched);
-                }
+                out.write(line, 0, held);   // a beginning of a notice that the stream ended in
                 out.flush();
             } catch (IOException e) {
                 // this process's stderr closed, or the child's: nothing more to pass on
             }
+        }
+
+        /** Whether {@code b[0..len)}, a whole line with its newline, is one of the notices. */
+        static boolean isNotice(byte[] b, int len) {
+            return startsLike(b, len, NOTICE) && len == NOTICE.length
+                    || countThen(b, len) && len - digits(b, len) == DIRECTIVES.length;
+        }
+
+        /** Whether {@code b[0..len)} is the beginning of a notice (or a whole one). */
+        static boolean mayBeNotice(byte[] b, int len) {
+            return startsLike(b, len, NOTICE) || countThen(b, len);
+        }
+
+        /** Whether {@code b[0..len)} is a count so far, or a count and the beginning of {@link #DIRECTIVES}. */
+        private static boolean countThen(byte[] b, int len) {
+            int d = digits(b, len);
+            if (d > COUNT_DIGITS || d == 0 && len > 0) {
+                return false;
+            }
+            if (len - d > DIRECTIVES.length) {
+                return false;
+            }
+            for (int i = d; i < len; i++) {
+                if (b[i] != DIRECTIVES[i - d]) {
+                    return false;
+                }
+            }
+            return true;
+        }
+
+        /** The leading ASCII digits of {@code b[0..len)}. */
+        private static int digits(byte[] b, int len) {
+            int d = 0;
+            while (d < len && b[d] >= '0' && b[d] <= '9') {
+                d++;
+            }
+            return d;
+        }
+
+        /** Whether {@code b[0..len)} is a prefix of {@code notice} (the whole of it included). */
+        private static boolean startsLike(byte[] b, int len, byte[] notice) {
+            if (len > notice.length) {
+                return false;
+            }
+            for (int i = 0; i < len; i++) {
+                if (b[i] != notice[i]) {
+                    return false;
+                }
+            }
+            return true;
         }
     }
 }

@@ -8,9 +8,9 @@ import java.nio.charset.StandardCharsets;
 import org.junit.jupiter.api.Test;
 
 /**
- * The JIT policy's filter of a long render's stderr (JitPolicy.NoticeFilter): the JVM's notice of the
- * incubator module is dropped when it is the first line, and every other byte passes as it came, however
- * the reads split it.
+ * The JIT policy's filter of a long render's stderr (JitPolicy.NoticeFilter): the JVM's notices of the
+ * incubator module and of the compiler directives it read are dropped when they are the first lines, in
+ * either order, and every other byte passes as it came, however the reads split it.
  */
 class JitPolicyNoticeTest {
 
@@ -59,6 +59,27 @@ class JitPolicyNoticeTest {
             assertEquals("WARNING: Using incubator modules: jdk.incubator.vector and more\n",
                     filtered("WARNING: Using incubator modules: jdk.incubator.vector and more\n", chunk));
             assertEquals("café ✓\n", filtered(NOTICE + "café ✓\n", chunk), "bytes, not characters");
+        }
+    }
+
+    private static final String DIRECTIVES = "1 compiler directives added\n";
+
+    @Test
+    void theDirectivesCountIsDroppedBeforeOrAfterTheModuleNotice() throws Exception {
+        for (int chunk : new int[] {1, 3, 8192}) {
+            assertEquals("scene.txt: no such file\n", filtered(DIRECTIVES + NOTICE + "scene.txt: no such file\n", chunk));
+            assertEquals("\r[==  ] 20%", filtered(NOTICE + DIRECTIVES + "\r[==  ] 20%", chunk));
+            assertEquals("x\n", filtered("12 compiler directives added\nx\n", chunk), "any count");
+            assertEquals("", filtered(DIRECTIVES, chunk));
+            assertEquals("other\n" + DIRECTIVES, filtered("other\n" + DIRECTIVES, chunk), "not among the first lines: kept");
+            assertEquals(" compiler directives added\n", filtered(" compiler directives added\n", chunk), "no count: kept");
+            assertEquals("123456 compiler directives added\n", filtered("123456 compiler directives added\n", chunk),
+                    "a count no launcher's file gives: kept");
+            assertEquals("1 compiler directives added and more\n", filtered("1 compiler directives added and more\n", chunk));
+            assertEquals("1 compiler", filtered("1 compiler", chunk), "a beginning at the end: kept");
+            assertEquals("42\n", filtered("42\n", chunk), "a number alone: kept");
+            assertEquals("2 scenes\n" + NOTICE, filtered(DIRECTIVES + "2 scenes\n" + NOTICE, chunk),
+                    "after another line the module's notice is kept");
         }
     }
 }

@@ -145,11 +145,13 @@ class LauncherTest {
         Path script = installHome().resolve("bin/raytracer");
         Run longRun = run(script, dir, Map.of("RAYTRACER_JIT", "long", "JAVA_OPTS", "-XX:+PrintFlagsFinal"), "--version");
         assertEquals(0, longRun.status, longRun.err);
-        assertEquals(4, flag(longRun.out, "TieredStopAtLevel"));
-        assertTrue(flag(longRun.out, "CICompilerCount") >= 4, longRun.out);
+        // a long render's JVM writes its own output (this table) to stderr: stdout may carry an image
+        assertEquals(4, flag(longRun.err, "TieredStopAtLevel"));
+        assertTrue(flag(longRun.err, "CICompilerCount") >= 4, longRun.err);
+        assertTrue(!longRun.out.contains("CICompilerCount"), "nothing of the JVM's on stdout: " + longRun.out);
         Run own = run(script, dir, Map.of("RAYTRACER_JIT", "long", "JAVA_OPTS", "-XX:+PrintFlagsFinal -XX:CICompilerCount=2"),
                 "--version");
-        assertEquals(2, flag(own.out, "CICompilerCount"), "the user's count wins");
+        assertEquals(2, flag(own.err, "CICompilerCount"), "the user's count wins");
         Run shortRun = run(script, dir, Map.of("RAYTRACER_JIT", "short", "JAVA_OPTS", "-XX:+PrintFlagsFinal"), "--version");
         assertEquals(1, flag(shortRun.out, "TieredStopAtLevel"));
         assertTrue(shortRun.out.matches("(?s).*\\bCICompilerCount\\s+=\\s+\\d+\\s+\\{product\\} \\{ergonomic\\}.*"),
@@ -189,16 +191,57 @@ class LauncherTest {
         // the young generation capped for the vector code's warm-up garbage, unless the user sizes the heap
         Run young = run(script, dir, Map.of("RAYTRACER_JIT", "long", "RAYTRACER_SIMD", "1", "JAVA_OPTS", "-XX:+PrintFlagsFinal"),
                 "--version");
-        assertEquals(192L << 20, flag(young.out, "MaxNewSize"), "a SIMD render's young generation");
-        assertTrue(young.out.matches("(?s).*\\bMaxNewSize\\s+=\\s+\\d+\\s+\\{product\\} \\{command line\\}.*"), young.out);
+        assertEquals(192L << 20, flag(young.err, "MaxNewSize"), "a SIMD render's young generation");
+        assertTrue(young.err.matches("(?s).*\\bMaxNewSize\\s+=\\s+\\d+\\s+\\{product\\} \\{command line\\}.*"), young.err);
         Run sized = run(script, dir, Map.of("RAYTRACER_JIT", "long", "RAYTRACER_SIMD", "1", "JAVA_OPTS",
                 "-XX:+PrintFlagsFinal -Xmx64m"), "--version");
         assertEquals(0, sized.status, sized.err);
-        assertTrue(flag(sized.out, "MaxNewSize") < 64L << 20 && !sized.err.contains("MaxNewSize"),
+        assertTrue(flag(sized.err, "MaxNewSize") < 64L << 20 && !sized.err.contains("VM warning"),
                 "the user's heap size, no warning: " + sized.err);
         Run plainYoung = run(script, dir, Map.of("RAYTRACER_JIT", "long", "JAVA_OPTS", "-XX:+PrintFlagsFinal"), "--version");
-        assertTrue(!plainYoung.out.matches("(?s).*\\bMaxNewSize\\s+=\\s+\\d+\\s+\\{product\\} \\{command line\\}.*"),
-                "only a SIMD render's: " + plainYoung.out);
+        assertTrue(!plainYoung.err.matches("(?s).*\\bMaxNewSize\\s+=\\s+\\d+\\s+\\{product\\} \\{command line\\}.*"),
+                "only a SIMD render's: " + plainYoung.err);
+    }
+
+    /**
+     * A long render's BVH build is never compiled by C2 (the installation's lib/c2-directives.json): with
+     * C2's thresholds lowered so that a build of 3,000 spheres would reach it, the builder is compiled by
+     * C1 only (level 1: without profiling) while the render's own methods reach level 4; a user's own
+     * directives file (here one that matches nothing) wins, and then the builder does reach C2, which
+     * shows the check can fail. The JVM's line about the file goes to stderr: an image written to stdout
+     * starts with PNG's signature.
+     */
+    @Test
+    void aLongRendersBvhBuildIsNotCompiledByC2() throws Exception {
+        Path script = installHome().resolve("bin/raytracer");
+        assertTrue(Files.isRegularFile(installHome().resolve("lib/c2-directives.json")), "the directives are installed");
+        StringBuilder scene = new StringBuilder("Width 16\nHeight 12\nCamera Camera\nVector3d eye [0 0 30]\n"
+                + "Material Diffuse d\nVector3d diffuseColor [1 0 0]\nLight PointLight\nVector3d position [3 3 40]\n");
+        java.util.Random random = new java.util.Random(36);
+        for (int i = 0; i < 3000; i++) {
+            scene.append(String.format(java.util.Locale.ROOT, "Surface Sphere%nVector3d center [%.4f %.4f %.4f]%n"
+                    + "double radius 0.05%nref material d%n", random.nextDouble() * 20 - 10, random.nextDouble() * 20 - 10,
+                    random.nextDouble() * 20 - 10));
+        }
+        Files.writeString(dir.resolve("many.txt"), scene.toString());
+        String jit = "-XX:+PrintCompilation -XX:CompileThresholdScaling=0.02";
+        java.util.regex.Pattern builderC2 = java.util.regex.Pattern.compile("(?m)^\\s*\\d+\\s+\\d+\\s+[%sbn! ]*4\\s+ray\\.accel\\.BvhBuilder");
+        java.util.regex.Pattern builderC1 = java.util.regex.Pattern.compile("(?m)^\\s*\\d+\\s+\\d+\\s+[%sbn! ]*1\\s+ray\\.accel\\.BvhBuilder::findSplit");
+        java.util.regex.Pattern renderC2 = java.util.regex.Pattern.compile("(?m)^\\s*\\d+\\s+\\d+\\s+[%sbn! ]*4\\s+ray\\.");
+
+        Run ours = run(script, dir, Map.of("RAYTRACER_JIT", "long", "JAVA_OPTS", jit), "-q", "-o", "-", "many.txt");
+        assertEquals(0, ours.status, ours.err);
+        assertTrue(ours.out.startsWith("\uFFFDPNG\r\n"), "the image alone on stdout");
+        assertTrue(ours.err.contains("1 compiler directives added"), "the JVM read the installed file: " + ours.err);
+        assertTrue(renderC2.matcher(ours.err).find(), "C2 compiles the render's methods");
+        assertFalse(builderC2.matcher(ours.err).find(), "no C2 compile of the builder");
+        assertTrue(builderC1.matcher(ours.err).find(), "the builder's split search compiled by C1 without profiling");
+
+        Path none = Files.writeString(dir.resolve("none.json"), "[ { match: \"none/None.none\", c2: { Exclude: true } } ]");
+        Run theirs = run(script, dir, Map.of("RAYTRACER_JIT", "long", "JAVA_OPTS", jit + " -XX:CompilerDirectivesFile=" + none),
+                "-q", "-o", "-", "many.txt");
+        assertEquals(0, theirs.status, theirs.err);
+        assertTrue(builderC2.matcher(theirs.err).find(), "the user's directives win, and the builder reaches C2: " + theirs.err);
     }
 
     /** The value of JVM flag {@code name} in -XX:+PrintFlagsFinal's table. */
