@@ -133,7 +133,7 @@ fi
 # no C2 for ray.accel.BvhBuilder and its nested classes, the Bvh constructor's layout of the tree and
 # Wide4.collapse; JSON without comments, which the JVM's reader refuses before the array). It runs once, and
 # C2's code for it came too late to pay: on mesh1m C2 spent about 0.3 s compiling it, the build took as
-# long either way, and C2's threads were busy while the render's own methods waited (mesh1m 0.96x the CPU
+# long either way, and C2's threads were busy while the render's own methods waited (mesh1m 0.95x the CPU
 # time, docs/performance.md, "Issue 20, session 36"). The builder runs C1's code without profiling instead.
 # Diagnostic options, unlocked for that; the JVM prints "1 compiler directives added" on starting, and so
 # that it never lands in an image written to stdout (-o -) all of the JVM's own output goes to stderr,

@@ -266,7 +266,7 @@ final class JitPolicy {
                 .getBytes(java.nio.charset.StandardCharsets.US_ASCII);
         /**
          * What the JVM prints after a count when it has read a compiler-directives file
-         * ({@code DirectivesParser}, JDK 9-25): "1 compiler directives added".
+         * ({@code DirectivesParser}, JDK 17-25): "1 compiler directives added".
          */
         static final byte[] DIRECTIVES = " compiler directives added\n".getBytes(java.nio.charset.StandardCharsets.US_ASCII);
         /** Digits of the count before {@link #DIRECTIVES}: more would be no notice of ours. */
@@ -317,13 +317,13 @@ final class JitPolicy {
         }
 
         /** Whether {@code b[0..len)}, a whole line with its newline, is one of the notices. */
-        static boolean isNotice(byte[] b, int len) {
+        private static boolean isNotice(byte[] b, int len) {
             return startsLike(b, len, NOTICE) && len == NOTICE.length
                     || countThen(b, len) && len - digits(b, len) == DIRECTIVES.length;
         }
 
         /** Whether {@code b[0..len)} is the beginning of a notice (or a whole one). */
-        static boolean mayBeNotice(byte[] b, int len) {
+        private static boolean mayBeNotice(byte[] b, int len) {
             return startsLike(b, len, NOTICE) || countThen(b, len);
         }
 
