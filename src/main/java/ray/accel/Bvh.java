@@ -100,13 +100,23 @@ public final class Bvh implements Accelerator {
      */
     static final boolean HASH = Boolean.getBoolean("ray.bvh.hash");
     private final long structureHash;
+    /**
+     * Per leaf, its box (6 floats: min xyz, max xyz, the tree's own) and its reference's code ({@code first
+     * slot << 4 | count}), for the light buffers; null without them.
+     */
+    private float[] leafBox;
+    private int[] leafCode;
+    /** One {@link LightBuffer} per point light the build was given, or null. */
+    private final LightBuffer[] lightBuffers;
 
-    private Bvh(Scene scene, BvhBuilder b, List<Surface> bounded, List<Surface> unboundedList, long buildNanos, int wideNodes) {
+    private Bvh(Scene scene, BvhBuilder b, List<Surface> bounded, List<Surface> unboundedList, long buildNanos, int wideNodes,
+                double[] pointLights, double raysPerLight) {
         this.scene = scene;
         this.root = b.root;
         this.rootBox = b.rootBox;
         this.nodeCount = b.nodeChild.length / 2;
         float[] binary = pack(b.nodeBox, b.nodeChild);
+        this.lightBuffers = lightBuffers(binary, pointLights, raysPerLight);
         this.wide = root >= 0 && nodeCount >= wideNodes ? new Wide4(binary, root, nodeCount) : null;
         this.node = wide == null ? binary : null;
         this.buildNanos = buildNanos;
@@ -180,6 +190,46 @@ public final class Bvh implements Accelerator {
         }
     }
 
+    /**
+     * The light buffers of the points at {@code pointLights} over the leaves of the tree whose nodes are
+     * {@code binary} ({@link #NODE} floats a node), which also fills {@link #leafBox} and {@link #leafCode};
+     * null when there is no point, where they do not pay ({@link #build(List, Scene, double[], double)}; any
+     * tree when {@code raysPerLight} is infinite, the empty one aside), or for more leaves than a buffer takes.
+     */
+    private LightBuffer[] lightBuffers(float[] binary, double[] pointLights, double raysPerLight) {
+        int leaves = root < 0 ? 1 : nodeCount + 1;   // a binary tree of k inner nodes has k + 1 leaves
+        boolean pays = raysPerLight == Double.POSITIVE_INFINITY
+                || nodeCount >= LIGHT_BUFFER_NODES && raysPerLight >= LIGHT_BUFFER_RAYS_PER_LEAF * leaves;
+        if (!LIGHT_BUFFERS || pointLights == null || pointLights.length < 3 || !pays || root == ~0
+                || leaves > LightBuffer.INDEX_MASK) {   // root ~0: no primitive
+            return null;
+        }
+        float[] box = new float[6 * leaves];
+        int[] code = new int[leaves];
+        int k = 0;
+        if (root < 0) {
+            System.arraycopy(rootBox, 0, box, 0, 6);
+            code[k++] = ~root;
+        } else {
+            for (int i = 0; i < nodeCount; i++) {
+                for (int c = 0; c < 2; c++) {
+                    int ref = Float.floatToRawIntBits(binary[NODE * i + 12 + c]);
+                    if (ref < 0) {
+                        System.arraycopy(binary, NODE * i + 6 * c, box, 6 * k, 6);
+                        code[k++] = ~ref;
+                    }
+                }
+            }
+        }
+        leafBox = Arrays.copyOf(box, 6 * k);
+        leafCode = Arrays.copyOf(code, k);
+        LightBuffer[] out = new LightBuffer[pointLights.length / 3];
+        for (int l = 0; l < out.length; l++) {
+            out[l] = new LightBuffer(pointLights[3 * l], pointLights[3 * l + 1], pointLights[3 * l + 2], leafBox, k);
+        }
+        return out;
+    }
+
     private static PrimitiveSet.Type typeOf(Surface s) {
         PrimitiveSet.Type t = s.packedType();
         return t == null ? SurfaceSet.TYPE : t;
@@ -242,10 +292,46 @@ public final class Bvh implements Accelerator {
     }
 
     /**
+     * {@link #build(List, Scene)} with a light buffer ({@link LightBuffer}) for each point light at
+     * {@code pointLights[3k..3k+2]} (null or empty: none), where they pay: the tree has
+     * {@link #LIGHT_BUFFER_NODES} inner nodes or more, and a render's {@code raysPerLight} (the shadow rays it
+     * may cast toward one light: its camera rays, a shadow ray each at their hits) are at least
+     * {@link #LIGHT_BUFFER_RAYS_PER_LEAF} a leaf. The shadow rays that end at one of them then test only the
+     * leaves seen from it in their direction.
+     */
+    public static Bvh build(List<Surface> sceneSurfaces, Scene scene, double[] pointLights, double raysPerLight) {
+        return build(sceneSurfaces, scene, WIDE ? WIDE_NODES : Integer.MAX_VALUE, pointLights, raysPerLight);
+    }
+
+    /**
+     * Inner nodes from which a tree gets light buffers: in a small tree (classic's one node, mirrors' four)
+     * a shadow ray's traversal is a box test or two, less than finding its cell.
+     */
+    static final int LIGHT_BUFFER_NODES = Integer.getInteger("ray.lightBuffer.nodes", 64);
+    /**
+     * Shadow rays a light per leaf from which the light buffers pay for their making (about 50 bytes of
+     * entries a leaf and light, a few milliseconds a light for ten thousand leaves): mesh100k's 480,000 camera
+     * rays over 30,000 leaves (16 a leaf) did not, 7.7 M (256 a leaf) did, and spheres10k's 480,000 over 2,500.
+     */
+    static final int LIGHT_BUFFER_RAYS_PER_LEAF = Integer.getInteger("ray.lightBuffer.raysPerLeaf", 64);
+
+    /** Whether light buffers are made at all ({@code -Dray.lightBuffer=false}: never, to compare). */
+    static final boolean LIGHT_BUFFERS = !"false".equals(System.getProperty("ray.lightBuffer"));
+
+    /**
      * {@link #build(List, Scene)}, traversed wide ({@link Wide4}) when the tree has at least
      * {@code wideNodes} inner nodes (the module {@code jdk.incubator.vector} must then be present).
      */
     static Bvh build(List<Surface> sceneSurfaces, Scene scene, int wideNodes) {
+        return build(sceneSurfaces, scene, wideNodes, null, 0);
+    }
+
+    /**
+     * {@link #build(List, Scene, int)} with light buffers at {@code pointLights}, made where they pay for a
+     * render of {@code raysPerLight} shadow rays a light ({@link #build(List, Scene, double[], double)}), or
+     * whatever the tree's size when {@code raysPerLight} is infinite (the tests' way to reach them).
+     */
+    static Bvh build(List<Surface> sceneSurfaces, Scene scene, int wideNodes, double[] pointLights, double raysPerLight) {
         long t0 = System.nanoTime();
         List<Surface> surfaces = new ArrayList<>(sceneSurfaces.size());
         for (Surface s : sceneSurfaces) {
@@ -279,7 +365,12 @@ public final class Bvh implements Accelerator {
         }
         BvhBuilder b = new BvhBuilder(box, bounded.size());
         b.build();
-        return new Bvh(scene, b, bounded, unbounded, System.nanoTime() - t0, wideNodes);
+        return new Bvh(scene, b, bounded, unbounded, System.nanoTime() - t0, wideNodes, pointLights, raysPerLight);
+    }
+
+    /** The light buffers, or null (tests). */
+    LightBuffer[] lightBuffers() {
+        return lightBuffers;
     }
 
     /** Whether this tree is traversed four boxes at a time ({@link Wide4}). */
@@ -313,6 +404,12 @@ public final class Bvh implements Accelerator {
     public long memoryBytes() {
         long m = (wide != null ? wide.memoryBytes() : 4L * node.length)
                 + (slotRun == null ? 0 : 4L * slotRun.length + 4L * slotIndex.length);
+        if (lightBuffers != null) {
+            m += 4L * leafBox.length + 4L * leafCode.length;
+            for (LightBuffer lb : lightBuffers) {
+                m += lb.memoryBytes();
+            }
+        }
         for (PrimitiveSet s : sets) {
             m += s.memoryBytes();
         }
@@ -631,6 +728,12 @@ public final class Bvh implements Accelerator {
         }
         double ox = q.ox, oy = q.oy, oz = q.oz, tMin = q.tMin, tMax = q.tMax;
         double ix = 1 / q.dx, iy = 1 / q.dy, iz = 1 / q.dz;
+        if (lightBuffers != null) {   // a shadow ray to a point light: the leaves seen from it that way
+            LightBuffer lb = LightBuffer.serves(lightBuffers, q);
+            if (lb != null) {
+                return lb.anyHit(this, q, slot, cache, leafBox, leafCode, ix, iy, iz) || unshadowed(q, slot, cache);
+            }
+        }
         boolean sx = ix < 0, sy = iy < 0, sz = iz < 0;
         if (root < 0 && !(slabs(rootBox, 0, sx, sy, sz, ox, oy, oz, ix, iy, iz, tMin, tMax) <= Double.MAX_VALUE)) {
             return unshadowed(q, slot, cache);

@@ -2,9 +2,11 @@ package ray.render;
 
 import javax.vecmath.Vector3d;
 import ray.Engine;
+import ray.RayKind;
 import ray.Scene;
 import ray.TraceContext;
 import ray.accel.Bvh;
+import ray.light.PointLight;
 import ray.plan.RenderPlan;
 import ray.settings.RenderSettings;
 
@@ -35,8 +37,34 @@ public final class RenderEngine implements Engine {
         synchronized (scene) {
             scene.prepareCamera();
             plan.apply();
-            scene.useAccelerator(Bvh.build(scene.surfaces, scene));
+            // a shadow ray toward each point light at most per camera ray's hit: the light buffers' measure
+            scene.useAccelerator(Bvh.build(scene.surfaces, scene, pointLights(scene), plan.bound().get(RayKind.CAMERA)));
         }
+    }
+
+    /**
+     * The positions of the scene's point lights (x, y, z each), for the BVH's light buffers: a shadow ray
+     * toward one of them tests only the leaves seen from it in the ray's direction (ray.accel.LightBuffer;
+     * the BVH checks that a ray ends at the position before it uses the buffer, so a subclass that moves
+     * its samples is answered by the tree).
+     */
+    static double[] pointLights(Scene scene) {
+        int n = 0;
+        for (int i = 0; i < scene.lights.size(); i++) {   // indexed: no iterator
+            if (scene.lights.get(i) instanceof PointLight) {
+                n++;
+            }
+        }
+        double[] xyz = new double[3 * n];
+        for (int i = 0, k = 0; i < scene.lights.size(); i++) {
+            if (scene.lights.get(i) instanceof PointLight) {
+                Vector3d p = ((PointLight) scene.lights.get(i)).position;
+                xyz[k++] = p.x;
+                xyz[k++] = p.y;
+                xyz[k++] = p.z;
+            }
+        }
+        return xyz;
     }
 
     @Override
