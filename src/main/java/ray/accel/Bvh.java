@@ -100,13 +100,7 @@ public final class Bvh implements Accelerator {
      */
     static final boolean HASH = Boolean.getBoolean("ray.bvh.hash");
     private final long structureHash;
-    /**
-     * Per leaf, its box (6 floats: min xyz, max xyz, the tree's own) and its reference's code ({@code first
-     * slot << 4 | count}), for the light buffers; null without them.
-     */
-    private float[] leafBox;
-    private int[] leafCode;
-    /** One {@link LightBuffer} per point light the build was given, or null. */
+    /** One {@link LightBuffer} per point light the build was given, where they pay; else null. */
     private final LightBuffer[] lightBuffers;
 
     private Bvh(Scene scene, BvhBuilder b, List<Surface> bounded, List<Surface> unboundedList, long buildNanos, int wideNodes,
@@ -192,8 +186,7 @@ public final class Bvh implements Accelerator {
 
     /**
      * The light buffers of the points at {@code pointLights} over the leaves of the tree whose nodes are
-     * {@code binary} ({@link #NODE} floats a node), which also fills {@link #leafBox} and {@link #leafCode};
-     * null when there is no point, where they do not pay ({@link #build(List, Scene, double[], double)}; any
+     * {@code binary} ({@link #NODE} floats a node), sharing the leaves' boxes and references; null when there is no point, where they do not pay ({@link #build(List, Scene, double[], double)}; any
      * tree when {@code raysPerLight} is infinite, the empty one aside), or for more leaves than a buffer takes.
      */
     private LightBuffer[] lightBuffers(float[] binary, double[] pointLights, double raysPerLight) {
@@ -221,11 +214,11 @@ public final class Bvh implements Accelerator {
                 }
             }
         }
-        leafBox = Arrays.copyOf(box, 6 * k);
-        leafCode = Arrays.copyOf(code, k);
+        float[] leafBox = Arrays.copyOf(box, 6 * k);
+        int[] leafCode = Arrays.copyOf(code, k);
         LightBuffer[] out = new LightBuffer[pointLights.length / 3];
         for (int l = 0; l < out.length; l++) {
-            out[l] = new LightBuffer(pointLights[3 * l], pointLights[3 * l + 1], pointLights[3 * l + 2], leafBox, k);
+            out[l] = new LightBuffer(pointLights[3 * l], pointLights[3 * l + 1], pointLights[3 * l + 2], leafBox, leafCode);
         }
         return out;
     }
@@ -405,7 +398,7 @@ public final class Bvh implements Accelerator {
         long m = (wide != null ? wide.memoryBytes() : 4L * node.length)
                 + (slotRun == null ? 0 : 4L * slotRun.length + 4L * slotIndex.length);
         if (lightBuffers != null) {
-            m += 4L * leafBox.length + 4L * leafCode.length;
+            m += lightBuffers[0].leafBytes();   // the leaves' boxes and references, shared by the buffers
             for (LightBuffer lb : lightBuffers) {
                 m += lb.memoryBytes();
             }
@@ -731,7 +724,7 @@ public final class Bvh implements Accelerator {
         if (lightBuffers != null) {   // a shadow ray to a point light: the leaves seen from it that way
             LightBuffer lb = LightBuffer.serves(lightBuffers, q);
             if (lb != null) {
-                return lb.anyHit(this, q, slot, cache, leafBox, leafCode, ix, iy, iz) || unshadowed(q, slot, cache);
+                return lb.anyHit(this, q, slot, cache, ix, iy, iz) || unshadowed(q, slot, cache);
             }
         }
         boolean sx = ix < 0, sy = iy < 0, sz = iz < 0;

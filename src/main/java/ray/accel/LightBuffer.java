@@ -49,6 +49,12 @@ final class LightBuffer {
     private final int[] leaf;
     /** Per entry, a lower bound of the squared distance from L to the leaf's box. */
     private final double[] near2;
+    /**
+     * Per leaf of the tree, its box (6 floats: min xyz, max xyz, the tree's own) and its reference's code
+     * ({@code first slot << 4 | count}): shared by a tree's buffers.
+     */
+    private final float[] box;
+    private final int[] code;
     /** Every leaf, nearest first, and its distance from L (a lower bound): the near list's order. */
     private final int[] byDistance;
     private final double[] distance;
@@ -74,9 +80,12 @@ final class LightBuffer {
 
     /**
      * The buffer of the point at ({@code x}, {@code y}, {@code z}) over the leaves whose boxes are
-     * {@code box[6i..6i+5]} (min xyz, max xyz; {@code count} of them).
+     * {@code box[6i..6i+5]} (min xyz, max xyz) and whose references' codes are {@code code[i]}.
      */
-    LightBuffer(double x, double y, double z, float[] box, int count) {
+    LightBuffer(double x, double y, double z, float[] box, int[] code) {
+        this.box = box;
+        this.code = code;
+        int count = code.length;
         lx = x;
         ly = y;
         lz = z;
@@ -148,7 +157,7 @@ final class LightBuffer {
 
     /**
      * The cells of face {@code face} (axis face / 2, the positive side when even) that the box at
-     * {@code box[o..o+5]} covers seen from L, widened by one cell and clamped to the face: columns
+     * {@code box[o..o+5]} covers seen from L, widened by {@link #WIDEN} and clamped to the face: columns
      * {@code range[0..1]}, rows {@code range[2..3]}; false when the box has no direction on that side.
      */
     private boolean footprint(float[] box, int o, int face, int[] range) {
@@ -172,7 +181,7 @@ final class LightBuffer {
 
     /**
      * The cells along one side of a face that directions (p, z), p in [p0, p1], z in [zlo, zhi] with z > 0,
-     * fall in (p / z from -1 to 1 over n cells), widened by one: {@code range[at..at+1]}; false when none.
+     * fall in (p / z from -1 to 1 over n cells), widened by {@link #WIDEN}: {@code range[at..at+1]}; false when none.
      */
     private boolean cells(double p0, double p1, double zlo, double zhi, int[] range, int at) {
         double lo = p0 >= 0 ? p0 / zhi : zlo > 0 ? p0 / zlo : Double.NEGATIVE_INFINITY;
@@ -220,7 +229,9 @@ final class LightBuffer {
      * it ({@code ix..iz}: 1 / D) and each leaf entered handed to the tree's leaf test (occluder cache
      * {@code slot} when {@code cache}).
      */
-    boolean anyHit(Bvh bvh, RayQuery q, int slot, boolean cache, float[] box, int[] code, double ix, double iy, double iz) {
+    boolean anyHit(Bvh bvh, RayQuery q, int slot, boolean cache, double ix, double iy, double iz) {
+        float[] box = this.box;
+        int[] code = this.code;
         double dx = q.dx, dy = q.dy, dz = q.dz;
         double ox = q.ox, oy = q.oy, oz = q.oz, tMin = q.tMin, tMax = q.tMax;
         boolean sx = ix < 0, sy = iy < 0, sz = iz < 0;
@@ -289,6 +300,12 @@ final class LightBuffer {
         return false;
     }
 
+    /** The leaves' boxes and references, which a tree's buffers share. */
+    long leafBytes() {
+        return 4L * box.length + 4L * code.length;
+    }
+
+    /** This buffer's own arrays. */
     long memoryBytes() {
         return 4L * start.length + 4L * leaf.length + 8L * near2.length + 12L * byDistance.length;
     }
