@@ -116,16 +116,7 @@ final class LightBuffer {
         int[] count0 = new int[cells + 1];
         int[] range = new int[4];
         for (int k = 0; k < count; k++) {
-            int i = byDistance[k];
-            for (int face = 0; face < 6; face++) {
-                if (footprint(box, 6 * i, face, range)) {
-                    for (int r = range[2]; r <= range[3]; r++) {
-                        for (int c = range[0]; c <= range[1]; c++) {
-                            count0[(face * n + r) * n + c + 1]++;
-                        }
-                    }
-                }
-            }
+            place(box, byDistance[k], range, count0, null, null, 0);
         }
         for (int c = 0; c < cells; c++) {
             count0[c + 1] += count0[c];
@@ -136,13 +127,27 @@ final class LightBuffer {
         int[] fill = Arrays.copyOf(start, cells);
         for (int k = 0; k < count; k++) {
             int i = byDistance[k];
-            for (int face = 0; face < 6; face++) {
-                if (footprint(box, 6 * i, face, range)) {
-                    for (int r = range[2]; r <= range[3]; r++) {
-                        for (int c = range[0]; c <= range[1]; c++) {
-                            int e = fill[(face * n + r) * n + c]++;
-                            leaf[e] = i;
-                            near2[e] = d2[i];
+            place(box, i, range, null, fill, leaf, d2[i]);
+        }
+    }
+
+    /**
+     * Leaf {@code i} in each cell of its footprint ({@link #footprint}): counted in {@code counts[cell + 1]}
+     * when {@code fill} is null, else written at {@code fill[cell]} (then advanced) into {@code into} and
+     * {@link #near2} with {@code d2}.
+     */
+    private void place(float[] box, int i, int[] range, int[] counts, int[] fill, int[] into, double d2) {
+        for (int face = 0; face < 6; face++) {
+            if (footprint(box, 6 * i, face, range)) {
+                for (int r = range[2]; r <= range[3]; r++) {
+                    for (int c = range[0]; c <= range[1]; c++) {
+                        int cell = (face * n + r) * n + c;
+                        if (fill == null) {
+                            counts[cell + 1]++;
+                        } else {
+                            int e = fill[cell]++;
+                            into[e] = i;
+                            near2[e] = d2;
                         }
                     }
                 }
@@ -230,8 +235,6 @@ final class LightBuffer {
      * {@code slot} when {@code cache}).
      */
     boolean anyHit(Bvh bvh, RayQuery q, int slot, boolean cache, double ix, double iy, double iz) {
-        float[] box = this.box;
-        int[] code = this.code;
         double dx = q.dx, dy = q.dy, dz = q.dz;
         double ox = q.ox, oy = q.oy, oz = q.oz, tMin = q.tMin, tMax = q.tMax;
         boolean sx = ix < 0, sy = iy < 0, sz = iz < 0;
@@ -241,12 +244,7 @@ final class LightBuffer {
         dm = dm >= adz ? dm : adz;
         double nearLimit = 0x1p-7 * dm;
         for (int k = 0; k < distance.length && distance[k] <= nearLimit; k++) {
-            int i = byDistance[k];
-            if (Bvh.COUNT) {
-                q.nodeVisits++;
-            }
-            if (Bvh.slabs(box, 6 * i, sx, sy, sz, ox, oy, oz, ix, iy, iz, tMin, tMax) <= Double.MAX_VALUE
-                    && bvh.hit(code[i], q, slot, cache)) {
+            if (hit(bvh, q, byDistance[k], slot, cache, sx, sy, sz, ox, oy, oz, ix, iy, iz, tMin, tMax)) {
                 return true;
             }
         }
@@ -288,16 +286,24 @@ final class LightBuffer {
             }
         }
         for (int e = lo - 1; e >= first; e--) {
-            int i = leaf[e];
-            if (Bvh.COUNT) {
-                q.nodeVisits++;
-            }
-            if (Bvh.slabs(box, 6 * i, sx, sy, sz, ox, oy, oz, ix, iy, iz, tMin, tMax) <= Double.MAX_VALUE
-                    && bvh.hit(code[i], q, slot, cache)) {
+            if (hit(bvh, q, leaf[e], slot, cache, sx, sy, sz, ox, oy, oz, ix, iy, iz, tMin, tMax)) {
                 return true;
             }
         }
         return false;
+    }
+
+    /**
+     * Leaf {@code i} tested as the traversal tests it: its box, then (entered) its primitives. Named
+     * {@code hit}, so the launcher's {@code CompileCommand=inline,ray.*::hit} keeps it inline under C1.
+     */
+    private boolean hit(Bvh bvh, RayQuery q, int i, int slot, boolean cache, boolean sx, boolean sy, boolean sz,
+                        double ox, double oy, double oz, double ix, double iy, double iz, double tMin, double tMax) {
+        if (Bvh.COUNT) {
+            q.nodeVisits++;
+        }
+        return Bvh.slabs(box, 6 * i, sx, sy, sz, ox, oy, oz, ix, iy, iz, tMin, tMax) <= Double.MAX_VALUE
+                && bvh.hit(code[i], q, slot, cache);
     }
 
     /** The leaves' boxes and references, which a tree's buffers share. */

@@ -60,6 +60,17 @@ class BvhPacketTest {
         }
     }
 
+    /** {@link #scene}, and with {@code floor} an unbounded surface below it (a floor at y = -1). */
+    static List<Surface> scene(Random r, List<Vector3d> vertices, boolean floor) {
+        List<Surface> all = scene(r, vertices);
+        if (floor) {
+            BvhTraversalTest.Floor f = new BvhTraversalTest.Floor();
+            f.level = -1;
+            all.add(f);
+        }
+        return all;
+    }
+
     static List<Surface> scene(Random r, List<Vector3d> vertices) {
         List<Surface> l = new ArrayList<>();
         grid(r, 14, l, vertices);

@@ -37,12 +37,7 @@ class LightBufferTest {
         int rays = 0, served = 0, shadowed = 0, lit = 0, near = 0;
         for (int sceneNo = 0; sceneNo < 8; sceneNo++) {
             List<Vector3d> vertices = new ArrayList<>();
-            List<Surface> all = BvhPacketTest.scene(r, vertices);
-            if (sceneNo % 2 == 1) {
-                BvhTraversalTest.Floor floor = new BvhTraversalTest.Floor();
-                floor.level = -1;
-                all.add(floor);
-            }
+            List<Surface> all = BvhPacketTest.scene(r, vertices, sceneNo % 2 == 1);
             Vector3d[] lights = {
                 rnd(r, 30),                                             // anywhere, often outside
                 rnd(r, 4),                                              // among the primitives

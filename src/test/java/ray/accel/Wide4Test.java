@@ -39,12 +39,7 @@ class Wide4Test {
         int rays = 0, hits = 0, ties = 0, axis = 0, shadowed = 0;
         for (int sceneNo = 0; sceneNo < 6; sceneNo++) {
             List<Vector3d> vertices = new ArrayList<>();
-            List<Surface> all = BvhPacketTest.scene(r, vertices);
-            if (sceneNo % 2 == 1) {
-                BvhTraversalTest.Floor floor = new BvhTraversalTest.Floor();
-                floor.level = -1;
-                all.add(floor);
-            }
+            List<Surface> all = BvhPacketTest.scene(r, vertices, sceneNo % 2 == 1);
             Bvh binary = Bvh.build(all, new Scene(), Integer.MAX_VALUE), wide = Bvh.build(all, new Scene(), 0);
             assertTrue(wide.isWide() && !binary.isWide());
             assertTrue(wide.nodeCount() > 100, "a deep tree");
