@@ -66,6 +66,12 @@ final class LightBuffer {
      */
     static final double WIDEN = 0x1p-20;
 
+    /**
+     * Point lights a tree gets buffers for, the first ones it is given: a shadow ray looks for its light
+     * among them one by one, and each costs its memory.
+     */
+    static final int MAX_LIGHTS = 16;
+
     /** The low bits of a sort key that hold a leaf's index: a buffer takes at most this many leaves. */
     static final long INDEX_MASK = (1L << 22) - 1;
 

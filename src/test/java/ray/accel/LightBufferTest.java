@@ -207,5 +207,7 @@ class LightBufferTest {
         assertNull(Bvh.build(all, new Scene(), new double[0], 1e9).lightBuffers(), "no point light");
         assertNull(Bvh.build(all, new Scene()).lightBuffers());
         assertTrue(b.memoryBytes() > Bvh.build(all, new Scene()).memoryBytes(), "the buffers are counted");
+        assertEquals(LightBuffer.MAX_LIGHTS, Bvh.build(all, new Scene(), new double[3 * 40], 1e9).lightBuffers().length,
+                "the first sixteen of forty lights");
     }
 }
