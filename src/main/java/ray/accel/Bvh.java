@@ -197,6 +197,17 @@ public final class Bvh implements Accelerator {
                 || leaves > LightBuffer.INDEX_MASK) {   // root ~0: no primitive
             return null;
         }
+        // a squared distance between a light and a box must stay finite (a NaN coordinate fails too)
+        for (float f : rootBox) {
+            if (!(Math.abs(f) <= LightBuffer.REACH)) {
+                return null;
+            }
+        }
+        for (double c : pointLights) {
+            if (!(Math.abs(c) <= LightBuffer.REACH)) {
+                return null;
+            }
+        }
         float[] box = new float[6 * leaves];
         int[] code = new int[leaves];
         int k = 0;

@@ -72,6 +72,12 @@ final class LightBuffer {
      */
     static final int MAX_LIGHTS = 16;
 
+    /**
+     * The largest coordinate of a light or a box a buffer is made with: every squared distance between
+     * them stays finite.
+     */
+    static final double REACH = 0x1p500;
+
     /** The low bits of a sort key that hold a leaf's index: a buffer takes at most this many leaves. */
     static final long INDEX_MASK = (1L << 22) - 1;
 

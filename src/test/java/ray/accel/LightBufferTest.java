@@ -205,6 +205,9 @@ class LightBufferTest {
         assertNotNull(Bvh.build(all, new Scene(), light, Bvh.LIGHT_BUFFER_RAYS_PER_LEAF * leaves).lightBuffers());
         assertNull(Bvh.build(all.subList(0, 20), new Scene(), light, 1e9).lightBuffers(), "a small tree");
         assertNull(Bvh.build(all, new Scene(), new double[0], 1e9).lightBuffers(), "no point light");
+        assertNull(Bvh.build(all, new Scene(), new double[] {1e200, 0, 0}, 1e9).lightBuffers(),
+                "a light so far that a squared distance would not be finite");
+        assertNull(Bvh.build(all, new Scene(), new double[] {Double.NaN, 0, 0}, 1e9).lightBuffers());
         assertNull(Bvh.build(all, new Scene()).lightBuffers());
         assertTrue(b.memoryBytes() > Bvh.build(all, new Scene()).memoryBytes(), "the buffers are counted");
         assertEquals(LightBuffer.MAX_LIGHTS, Bvh.build(all, new Scene(), new double[3 * 40], 1e9).lightBuffers().length,
