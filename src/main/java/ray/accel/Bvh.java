@@ -227,7 +227,10 @@ public final class Bvh implements Accelerator {
         }
         float[] leafBox = Arrays.copyOf(box, 6 * k);
         int[] leafCode = Arrays.copyOf(code, k);
-        LightBuffer[] out = new LightBuffer[Math.min(pointLights.length / 3, LightBuffer.MAX_LIGHTS)];
+        LightBuffer[] out = new LightBuffer[LightBuffer.lightsFor(pointLights.length / 3, k)];
+        if (out.length == 0) {
+            return null;
+        }
         for (int l = 0; l < out.length; l++) {
             out[l] = new LightBuffer(pointLights[3 * l], pointLights[3 * l + 1], pointLights[3 * l + 2], leafBox, leafCode);
         }

@@ -67,10 +67,20 @@ final class LightBuffer {
     static final double WIDEN = 0x1p-20;
 
     /**
-     * Point lights a tree gets buffers for, the first ones it is given: a shadow ray looks for its light
-     * among them one by one, and each costs its memory.
+     * Point lights a tree gets buffers for, the first ones it is given ({@link #lightsFor}): a shadow ray
+     * looks for its light among them one by one, and each costs its memory.
      */
     static final int MAX_LIGHTS = 16;
+    /**
+     * Leaves times lights a tree's buffers may hold: about 130 bytes a leaf and light, so at most about
+     * 140 MB (sixteen lights up to 65,536 leaves, one up to 2^20; none beyond).
+     */
+    static final long MAX_LEAF_LIGHTS = 1L << 20;
+
+    /** How many of {@code lights} point lights a tree of {@code leaves} leaves gets buffers for: the first ones. */
+    static int lightsFor(int lights, int leaves) {
+        return (int) Math.min(Math.min(lights, MAX_LIGHTS), MAX_LEAF_LIGHTS / Math.max(1, leaves));
+    }
 
     /**
      * The largest coordinate of a light or a box a buffer is made with: every squared distance between

@@ -212,5 +212,9 @@ class LightBufferTest {
         assertTrue(b.memoryBytes() > Bvh.build(all, new Scene()).memoryBytes(), "the buffers are counted");
         assertEquals(LightBuffer.MAX_LIGHTS, Bvh.build(all, new Scene(), new double[3 * 40], 1e9).lightBuffers().length,
                 "the first sixteen of forty lights");
+        assertEquals(16, LightBuffer.lightsFor(40, 65_536));
+        assertEquals(2, LightBuffer.lightsFor(2, 500_000));
+        assertEquals(1, LightBuffer.lightsFor(40, 1 << 20));
+        assertEquals(0, LightBuffer.lightsFor(40, (1 << 20) + 1), "none for more than 2^20 leaves");
     }
 }
