@@ -204,6 +204,8 @@ class LightBufferTest {
                 "too few rays for the tree");
         assertNotNull(Bvh.build(all, new Scene(), light, Bvh.LIGHT_BUFFER_RAYS_PER_LEAF * leaves).lightBuffers());
         assertNull(Bvh.build(all.subList(0, 20), new Scene(), light, 1e9).lightBuffers(), "a small tree");
+        assertNull(Bvh.build(all.subList(0, 20), new Scene(), light, Double.POSITIVE_INFINITY).lightBuffers(),
+                "a small tree, however many rays a render says it casts");
         assertNull(Bvh.build(all, new Scene(), new double[0], 1e9).lightBuffers(), "no point light");
         assertNull(Bvh.build(all, new Scene(), new double[] {1e200, 0, 0}, 1e9).lightBuffers(),
                 "a light so far that a squared distance would not be finite");
