@@ -313,10 +313,11 @@ public final class Bvh implements Accelerator {
     }
 
     /**
-     * Inner nodes from which a tree gets light buffers: in a small tree (classic's one node, mirrors' four)
-     * a shadow ray's traversal is a box test or two, less than finding its cell.
+     * Inner nodes from which a tree gets light buffers: in a small tree a shadow ray's traversal costs less
+     * than finding its cell (classic's one node: 1.25x the CPU with buffers; scenes/mesh.txt's 177: 1.05x;
+     * scenes/showcase.txt's 252: 0.93-0.94x; spheres10k's 2,430: 0.91-0.98x).
      */
-    static final int LIGHT_BUFFER_NODES = Integer.getInteger("ray.lightBuffer.nodes", 64);
+    static final int LIGHT_BUFFER_NODES = Integer.getInteger("ray.lightBuffer.nodes", 200);
     /**
      * Shadow rays a light per leaf from which the light buffers pay for their making (about 50 bytes of
      * entries a leaf and light, a few milliseconds a light for ten thousand leaves): mesh100k's 480,000 camera

@@ -191,10 +191,17 @@ class LightBufferTest {
         }
     }
 
-    /** Buffers only where they pay: a tree of 64 inner nodes or more, 64 shadow rays a leaf and light or more. */
+    /** Buffers only where they pay: a tree of 200 inner nodes or more, 64 shadow rays a leaf and light or more. */
     @Test
     void buffersOnlyWhereTheyPay() {
-        List<Surface> all = BvhPacketTest.scene(new Random(7), new ArrayList<>());
+        Random r = new Random(7);
+        List<Surface> all = new ArrayList<>();
+        while (Bvh.build(all, new Scene()).nodeCount() < Bvh.LIGHT_BUFFER_NODES) {   // more random scenes, in the same space
+            List<Surface> more = BvhPacketTest.scene(r, new ArrayList<>());
+            for (Surface s : more) {
+                all.add(s);
+            }
+        }
         double[] light = {1, 20, 3};
         Bvh b = Bvh.build(all, new Scene(), light, 1e9);
         assertTrue(b.nodeCount() >= Bvh.LIGHT_BUFFER_NODES);
