@@ -205,7 +205,9 @@ class LauncherTest {
 
     /**
      * A long render's BVH build is never compiled by C2 (the installation's lib/c2-directives.json): with
-     * C2's thresholds lowered so that a build of 3,000 spheres would reach it, the builder is compiled by
+     * C2's thresholds lowered so that a build of 3,000 spheres would reach it, and every compilation done
+     * before the code that asked for it goes on ({@code -Xbatch}: on a loaded machine a queued compile of
+     * the builder could otherwise still be waiting when the build ends, which failed CI once), the builder is compiled by
      * C1 only (level 1: without profiling) while the render's own methods reach level 4; a user's own
      * directives file (here one that matches nothing) wins, and then the builder does reach C2, which
      * shows the check can fail. The JVM's line about the file goes to stderr: an image written to stdout
@@ -224,7 +226,7 @@ class LauncherTest {
                     random.nextDouble() * 20 - 10));
         }
         Files.writeString(dir.resolve("many.txt"), scene.toString());
-        String jit = "-XX:+PrintCompilation -XX:CompileThresholdScaling=0.02";
+        String jit = "-Xbatch -XX:+PrintCompilation -XX:CompileThresholdScaling=0.02";   // -Xbatch: each compile done before the code goes on, whatever the load
         java.util.regex.Pattern builderC2 = java.util.regex.Pattern.compile("(?m)^\\s*\\d+\\s+\\d+\\s+[%sbn! ]*4\\s+ray\\.accel\\.BvhBuilder");
         java.util.regex.Pattern builderC1 = java.util.regex.Pattern.compile("(?m)^\\s*\\d+\\s+\\d+\\s+[%sbn! ]*1\\s+ray\\.accel\\.BvhBuilder::findSplit");
         java.util.regex.Pattern renderC2 = java.util.regex.Pattern.compile("(?m)^\\s*\\d+\\s+\\d+\\s+[%sbn! ]*4\\s+ray\\.");
