@@ -739,9 +739,9 @@ public final class Bvh implements Accelerator {
         double ox = q.ox, oy = q.oy, oz = q.oz, tMin = q.tMin, tMax = q.tMax;
         double ix = 1 / q.dx, iy = 1 / q.dy, iz = 1 / q.dz;
         if (lightBuffers != null) {   // a shadow ray to a point light: the leaves seen from it that way
-            LightBuffer lb = LightBuffer.serves(lightBuffers, q);
-            if (lb != null) {
-                return lb.anyHit(this, q, slot, cache, ix, iy, iz) || unshadowed(q, slot, cache);
+            int answer = LightBuffer.anyHit(lightBuffers, this, q, slot, cache, ix, iy, iz);
+            if (answer >= 0) {
+                return answer > 0 || unshadowed(q, slot, cache);
             }
         }
         boolean sx = ix < 0, sy = iy < 0, sz = iz < 0;

@@ -228,15 +228,23 @@ final class LightBuffer {
      * 2^-12 of the largest coordinate of O and L), over 0 &lt;= tMin, tMax &lt;= 1; null for any other ray.
      */
     static LightBuffer serves(LightBuffer[] buffers, RayQuery q) {
+        return serves(buffers, q, largest(q));
+    }
+
+    /** D's largest component's magnitude. */
+    private static double largest(RayQuery q) {
+        double adx = Math.abs(q.dx), ady = Math.abs(q.dy), adz = Math.abs(q.dz);
+        double dm = adx >= ady ? adx : ady;
+        return dm >= adz ? dm : adz;
+    }
+
+    /** {@link #serves(LightBuffer[], RayQuery)} for {@code dm}, D's largest component's magnitude. */
+    private static LightBuffer serves(LightBuffer[] buffers, RayQuery q, double dm) {
         if (!(q.tMin >= 0 && q.tMax <= 1)) {
             return null;
         }
-        double dx = q.dx, dy = q.dy, dz = q.dz;
-        double adx = Math.abs(dx), ady = Math.abs(dy), adz = Math.abs(dz);
-        double dm = adx >= ady ? adx : ady;
-        dm = dm >= adz ? dm : adz;
         double tol = 0x1p-40 * dm;
-        double ex = q.ox + dx, ey = q.oy + dy, ez = q.oz + dz;
+        double ex = q.ox + q.dx, ey = q.oy + q.dy, ez = q.oz + q.dz;
         for (LightBuffer b : buffers) {
             if (Math.abs(ex - b.lx) <= tol && Math.abs(ey - b.ly) <= tol && Math.abs(ez - b.lz) <= tol) {
                 // comparisons, not Math.max: C1 calls that on every shadow ray rather than inlining it
@@ -251,19 +259,27 @@ final class LightBuffer {
     }
 
     /**
-     * Whether a leaf of {@code bvh} stops query {@code q} (a ray this buffer {@link #serves}): the leaves
-     * near L, then the leaves of the cell of -D nearer to L than O, each box tested as the traversal tests
-     * it ({@code ix..iz}: 1 / D) and each leaf entered handed to the tree's leaf test (occluder cache
-     * {@code slot} when {@code cache}).
+     * The any-hit answer for query {@code q} of the buffer of {@code buffers} that {@link #serves} it: 1
+     * when a leaf of {@code bvh} stops it, 0 when none does, -1 when no buffer serves it (the tree answers).
+     * {@code ix..iz}: 1 / D, as the traversal has it; {@code slot}, {@code cache}: the occluder cache's.
      */
-    boolean anyHit(Bvh bvh, RayQuery q, int slot, boolean cache, double ix, double iy, double iz) {
+    static int anyHit(LightBuffer[] buffers, Bvh bvh, RayQuery q, int slot, boolean cache, double ix, double iy, double iz) {
+        double dm = largest(q);
+        LightBuffer b = serves(buffers, q, dm);
+        return b == null ? -1 : b.anyHit(bvh, q, slot, cache, ix, iy, iz, dm) ? 1 : 0;
+    }
+
+    /**
+     * Whether a leaf of {@code bvh} stops query {@code q} (a ray this buffer serves; {@code dm}: D's largest
+     * component's magnitude): the leaves near L, then the leaves of the cell of -D nearer to L than O, each
+     * box tested as the traversal tests it and each leaf entered handed to the tree's leaf test.
+     */
+    private boolean anyHit(Bvh bvh, RayQuery q, int slot, boolean cache, double ix, double iy, double iz, double dm) {
         double dx = q.dx, dy = q.dy, dz = q.dz;
         double ox = q.ox, oy = q.oy, oz = q.oz, tMin = q.tMin, tMax = q.tMax;
         boolean sx = ix < 0, sy = iy < 0, sz = iz < 0;
         double adx = Math.abs(dx), ady = Math.abs(dy), adz = Math.abs(dz);
         // the near list: every leaf within 2^-7 of D's largest component of L
-        double dm = adx >= ady ? adx : ady;
-        dm = dm >= adz ? dm : adz;
         double nearLimit = 0x1p-7 * dm;
         for (int k = 0; k < distance.length && distance[k] <= nearLimit; k++) {
             if (hit(bvh, q, byDistance[k], slot, cache, sx, sy, sz, ox, oy, oz, ix, iy, iz, tMin, tMax)) {
