@@ -242,17 +242,37 @@ final class Wide4 {
                     q.nodeVisits++;
                 }
                 if (enter(b, NODE * ref, nx, nx ^ 12, ny, ny ^ 20, nz, nz ^ 28, vox, voy, voz, vix, viy, viz, lo, hi, d)) {
-                    // lane order, unsorted (class comment): the lowest lane entered next, the others pushed
+                    // lane order, unsorted (class comment): the lowest lane entered next, the others pushed.
+                    // Written out rather than a loop over the lanes: C2 unrolls that loop anyway, but the
+                    // interpreter and C1 count its four back-edges a node, ~45 a query on mesh1m, above the
+                    // launcher's Tier3BackEdgeThreshold / Tier3MinInvocationThreshold (4000 / 100), so the
+                    // method was compiled on stack first and C2 compiled it two or three times
+                    // (docs/performance.md, issue 20, session 38).
                     int w = 4 * ref, next = 0;
                     boolean found = false;
-                    for (int i = 3; i >= 0; i--) {
-                        if (d[i] <= Double.MAX_VALUE) {
-                            if (found) {
-                                stack[sp++] = next;
-                            }
-                            next = kids[w + i];
-                            found = true;
+                    if (d[3] <= Double.MAX_VALUE) {
+                        next = kids[w + 3];
+                        found = true;
+                    }
+                    if (d[2] <= Double.MAX_VALUE) {
+                        if (found) {
+                            stack[sp++] = next;
                         }
+                        next = kids[w + 2];
+                        found = true;
+                    }
+                    if (d[1] <= Double.MAX_VALUE) {
+                        if (found) {
+                            stack[sp++] = next;
+                        }
+                        next = kids[w + 1];
+                        found = true;
+                    }
+                    if (d[0] <= Double.MAX_VALUE) {
+                        if (found) {
+                            stack[sp++] = next;
+                        }
+                        next = kids[w];
                     }
                     ref = next;   // enter returned true: at least one lane was entered
                     continue;
