@@ -367,56 +367,66 @@ public final class Renderer {
      */
     private void gridTile(TraceContext ctx, int x0, int y0, int x1, int y1, double[] au, double[] bv, double[] dirs,
                           Sampler grid, Image image, int ox, int oy) {
+        // a pixel a call (gridPixel), not the pixels' loops here: a tile's loops would count thousands of
+        // back-edges an invocation, so C2 compiled this method on stack at each of its loops before it
+        // compiled it whole (three C2 compilations of one method, docs/performance.md, session 40); a
+        // pixel a call is compiled once, whole, after a few hundred pixels
+        for (int y = y0; y < y1; y++) {
+            for (int x = x0; x < x1; x++) {
+                gridPixel(ctx, x, y, au, bv, dirs, grid, image, ox, oy);
+            }
+        }
+    }
+
+    /** Pixel (x, y) of {@link #gridTile}. */
+    private void gridPixel(TraceContext ctx, int x, int y, double[] au, double[] bv, double[] dirs, Sampler grid,
+                           Image image, int ox, int oy) {
         Camera cam = scene.camera;
         double ex = cam.eye.x, ey = cam.eye.y, ez = cam.eye.z, wx = cam.w.x, wy = cam.w.y, wz = cam.w.z;
-        int n = ns, count = n * n, iw = image.width;
-        double[] rgb = image.rgb;
+        int n = ns, count = n * n;
         Vector3d c = ctx.color(0);
         Ray ray = ctx.ray(0);
         Vector3d o = ray.origin, d = ray.direction;
         PixelSample sample = ctx.sample;
-        for (int y = y0; y < y1; y++) {
-            for (int x = x0; x < x1; x++) {
-                // the pixel's directions first, then its traces: the square roots and divisions of one
-                // ray do not wait for the previous ray's, so they overlap instead of adding up
-                for (int j = 0, q = 0; j < n; j++) {
-                    int jb = 3 * (y * n + j);
-                    double bx = bv[jb], by = bv[jb + 1], bz = bv[jb + 2];
-                    for (int i = 0, ia = 3 * x * n; i < n; i++, q += 3, ia += 3) {
-                        double dx = au[ia] + bx - wx, dy = au[ia + 1] + by - wy, dz = au[ia + 2] + bz - wz;
-                        double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
-                        dirs[q] = dx / len;
-                        dirs[q + 1] = dy / len;
-                        dirs[q + 2] = dz / len;
-                    }
-                }
-                double r = 0, g = 0, b = 0;
-                for (int s = 0, q = 0; s < count; s++, q += 3) {
-                    sample.start(grid, x, y, s);
-                    o.x = ex;
-                    o.y = ey;
-                    o.z = ez;
-                    d.x = dirs[q];
-                    d.y = dirs[q + 1];
-                    d.z = dirs[q + 2];
-                    ray.tMin = 0;
-                    ray.tMax = Double.POSITIVE_INFINITY;
-                    ray.depth = 0;
-                    scene.traceCamera(ray, ctx, c);
-                    if (Double.isFinite(c.x) && Double.isFinite(c.y) && Double.isFinite(c.z)) {
-                        r += c.x;
-                        g += c.y;
-                        b += c.z;
-                    } else {
-                        ctx.stats.invalidSamples++;   // last line of defence: a NaN never reaches a pixel
-                    }
-                }
-                int k = 3 * ((y - oy) * iw + (x - ox));
-                rgb[k] = r / count;
-                rgb[k + 1] = g / count;
-                rgb[k + 2] = b / count;
+        // the pixel's directions first, then its traces: the square roots and divisions of one
+        // ray do not wait for the previous ray's, so they overlap instead of adding up
+        for (int j = 0, q = 0; j < n; j++) {
+            int jb = 3 * (y * n + j);
+            double bx = bv[jb], by = bv[jb + 1], bz = bv[jb + 2];
+            for (int i = 0, ia = 3 * x * n; i < n; i++, q += 3, ia += 3) {
+                double dx = au[ia] + bx - wx, dy = au[ia + 1] + by - wy, dz = au[ia + 2] + bz - wz;
+                double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+                dirs[q] = dx / len;
+                dirs[q + 1] = dy / len;
+                dirs[q + 2] = dz / len;
             }
         }
+        double r = 0, g = 0, b = 0;
+        for (int s = 0, q = 0; s < count; s++, q += 3) {
+            sample.start(grid, x, y, s);
+            o.x = ex;
+            o.y = ey;
+            o.z = ez;
+            d.x = dirs[q];
+            d.y = dirs[q + 1];
+            d.z = dirs[q + 2];
+            ray.tMin = 0;
+            ray.tMax = Double.POSITIVE_INFINITY;
+            ray.depth = 0;
+            scene.traceCamera(ray, ctx, c);
+            if (Double.isFinite(c.x) && Double.isFinite(c.y) && Double.isFinite(c.z)) {
+                r += c.x;
+                g += c.y;
+                b += c.z;
+            } else {
+                ctx.stats.invalidSamples++;   // last line of defence: a NaN never reaches a pixel
+            }
+        }
+        double[] rgb = image.rgb;
+        int k = 3 * ((y - oy) * image.width + (x - ox));
+        rgb[k] = r / count;
+        rgb[k + 1] = g / count;
+        rgb[k + 2] = b / count;
     }
 
     /** Camera rays per packet ({@link #packetTile}): a square of pixels whose samples make about this many. */
@@ -432,6 +442,19 @@ public final class Renderer {
      */
     private void packetTile(TraceContext ctx, int x0, int y0, int x1, int y1, double[] au, double[] bv, int side,
                             Sampler grid, Image image, int ox, int oy) {
+        // a square a call, for the reason gridTile gives (five on-stack C2 compilations of this method on
+        // mesh1m before the whole one, docs/performance.md, session 40)
+        for (int by = y0; by < y1; by += side) {
+            int ye = Math.min(by + side, y1);
+            for (int bx = x0; bx < x1; bx += side) {
+                packetSquare(ctx, bx, by, Math.min(bx + side, x1), ye, au, bv, grid, image, ox, oy);
+            }
+        }
+    }
+
+    /** Pixels [bx, xe) x [by, ye) of {@link #packetTile}: their camera rays as one packet. */
+    private void packetSquare(TraceContext ctx, int bx, int by, int xe, int ye, double[] au, double[] bv,
+                              Sampler grid, Image image, int ox, int oy) {
         Camera cam = scene.camera;
         double ex = cam.eye.x, ey = cam.eye.y, ez = cam.eye.z, wx = cam.w.x, wy = cam.w.y, wz = cam.w.z;
         int n = ns, count = n * n, iw = image.width;
@@ -440,57 +463,51 @@ public final class Renderer {
         PixelSample sample = ctx.sample;
         RayPacket p = ctx.packet;
         Ray[] rays = p.rays;
-        for (int by = y0; by < y1; by += side) {
-            int ye = Math.min(by + side, y1);
-            for (int bx = x0; bx < x1; bx += side) {
-                int xe = Math.min(bx + side, x1);
-                int k = 0;
-                for (int y = by; y < ye; y++) {
-                    for (int x = bx; x < xe; x++) {
-                        for (int j = 0; j < n; j++) {
-                            int jb = 3 * (y * n + j);
-                            double bx3 = bv[jb], by3 = bv[jb + 1], bz3 = bv[jb + 2];
-                            for (int i = 0, ia = 3 * x * n; i < n; i++, ia += 3) {
-                                double dx = au[ia] + bx3 - wx, dy = au[ia + 1] + by3 - wy, dz = au[ia + 2] + bz3 - wz;
-                                double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
-                                Ray ray = rays[k++];
-                                Vector3d o = ray.origin, d = ray.direction;
-                                o.x = ex;
-                                o.y = ey;
-                                o.z = ez;
-                                d.x = dx / len;
-                                d.y = dy / len;
-                                d.z = dz / len;
-                                ray.tMin = 0;
-                                ray.tMax = Double.POSITIVE_INFINITY;
-                                ray.depth = 0;
-                            }
-                        }
+        int k = 0;
+        for (int y = by; y < ye; y++) {
+            for (int x = bx; x < xe; x++) {
+                for (int j = 0; j < n; j++) {
+                    int jb = 3 * (y * n + j);
+                    double bx3 = bv[jb], by3 = bv[jb + 1], bz3 = bv[jb + 2];
+                    for (int i = 0, ia = 3 * x * n; i < n; i++, ia += 3) {
+                        double dx = au[ia] + bx3 - wx, dy = au[ia + 1] + by3 - wy, dz = au[ia + 2] + bz3 - wz;
+                        double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+                        Ray ray = rays[k++];
+                        Vector3d o = ray.origin, d = ray.direction;
+                        o.x = ex;
+                        o.y = ey;
+                        o.z = ez;
+                        d.x = dx / len;
+                        d.y = dy / len;
+                        d.z = dz / len;
+                        ray.tMin = 0;
+                        ray.tMax = Double.POSITIVE_INFINITY;
+                        ray.depth = 0;
                     }
                 }
-                p.size = k;
-                scene.castCameras(p, ctx);
-                k = 0;
-                for (int y = by; y < ye; y++) {
-                    for (int x = bx; x < xe; x++) {
-                        double r = 0, g = 0, b = 0;
-                        for (int s = 0; s < count; s++, k++) {
-                            sample.start(grid, x, y, s);
-                            scene.shadeCamera(p, k, ctx, c);
-                            if (Double.isFinite(c.x) && Double.isFinite(c.y) && Double.isFinite(c.z)) {
-                                r += c.x;
-                                g += c.y;
-                                b += c.z;
-                            } else {
-                                ctx.stats.invalidSamples++;   // last line of defence: a NaN never reaches a pixel
-                            }
-                        }
-                        int q = 3 * ((y - oy) * iw + (x - ox));
-                        rgb[q] = r / count;
-                        rgb[q + 1] = g / count;
-                        rgb[q + 2] = b / count;
+            }
+        }
+        p.size = k;
+        scene.castCameras(p, ctx);
+        k = 0;
+        for (int y = by; y < ye; y++) {
+            for (int x = bx; x < xe; x++) {
+                double r = 0, g = 0, b = 0;
+                for (int s = 0; s < count; s++, k++) {
+                    sample.start(grid, x, y, s);
+                    scene.shadeCamera(p, k, ctx, c);
+                    if (Double.isFinite(c.x) && Double.isFinite(c.y) && Double.isFinite(c.z)) {
+                        r += c.x;
+                        g += c.y;
+                        b += c.z;
+                    } else {
+                        ctx.stats.invalidSamples++;   // last line of defence: a NaN never reaches a pixel
                     }
                 }
+                int q = 3 * ((y - oy) * iw + (x - ox));
+                rgb[q] = r / count;
+                rgb[q + 1] = g / count;
+                rgb[q + 2] = b / count;
             }
         }
     }
