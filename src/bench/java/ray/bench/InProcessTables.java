@@ -44,6 +44,14 @@ final class InProcessTables {
     private static List<String> throughputCommand(boolean fullJit, String... args) {
         List<String> cmd = new ArrayList<>(List.of(ProcessHandle.current().info().command().orElse("java")));
         cmd.addAll(launcherJvmArgs());
+        if (args.length > 0 && args[0].equals("--alloc")) {
+            // every thread's allocation, the render threads' included (the renderer starts its own, even for
+            // one): a collector that never collects and no thread-local buffers, so the heap's growth is
+            // every byte any thread allocated (Throughput.allocationLine); the launcher's collector removed
+            cmd.remove("-XX:+UseParallelGC");
+            cmd.addAll(List.of("-XX:+UnlockExperimentalVMOptions", "-XX:+UseEpsilonGC", "-XX:-UseTLAB", "-Xms64m", "-Xmx12g",
+                    "-Xlog:gc+init=off"));   // (Epsilon's advice on start-up, not for a measurement)
+        }
         if (fullJit) {
             cmd.add("-XX:TieredStopAtLevel=4");   // the last one wins
             // as the launcher starts a long render of a large scene (RAYTRACER_SIMD=1): a tree of 1,024 inner
@@ -89,15 +97,22 @@ final class InProcessTables {
         out.println();
         out.println("## Allocation on the hot path (a whole render on one thread, the launcher's JIT, after a warm-up render)");
         out.println();
-        out.println("Heap bytes the render thread allocated (com.sun.management.ThreadMXBean), less the image itself "
-                + "(24 bytes per pixel, allocated once). C1 has no escape analysis, so nothing here is removed by the JIT.");
+        out.println("Heap bytes every thread allocated during the render (the render thread's included: Epsilon GC, which never "
+                + "collects, and no thread-local allocation buffers, so the heap's growth is every byte), less the BVH "
+                + "build's (measured alone the same way) and the image itself (24 bytes per pixel, allocated once). "
+                + "C1 has no escape analysis, so nothing here is removed by the JIT. What is left is made once a render, "
+                + "not once a ray: the camera's tables (32 bytes per image column and row for each of n_s), the thread's "
+                + "context and packet.");
         out.println();
         out.println("| scene | rays | bytes allocated besides the image | bytes per ray |");
         out.println("|---|---:|---:|---:|");
         for (String s : scenes) {
             Path log = work.resolve("alloc.log");
             double t = Bench.time(throughputCommand(false, "--alloc", scenePaths.get(s).toAbsolutePath().toString()), work, log);
-            String[] f = Files.readString(log, StandardCharsets.UTF_8).trim().split(" ");
+            String[] f = {};
+            for (String l : Files.readAllLines(log, StandardCharsets.UTF_8)) {
+                f = l.startsWith("alloc ") ? l.trim().split(" ") : f;
+            }
             if (t < 0 || f.length != 5 || !f[0].equals("alloc")) {
                 out.println("| " + s + " | failed |  |  |");
                 continue;

@@ -298,22 +298,31 @@ public final class Throughput {
     }
 
     /**
-     * Heap bytes allocated per ray by a whole render on this thread (one render thread, after one
-     * warm-up render): what the hot path allocates, measured, not hoped for from escape analysis.
+     * Heap bytes allocated per ray by a whole single-threaded render, after one warm-up render: what the hot
+     * path allocates, measured, not hoped for from escape analysis. Counts every thread's allocation, the
+     * render thread's (which the renderer starts) included: it needs a JVM with the Epsilon collector and
+     * no thread-local allocation buffers (InProcessTables starts one), where the heap's used bytes only
+     * grow, by exactly what is allocated; any other collector is refused rather than measured wrongly.
      * "alloc BYTES_PER_RAY RAYS TOTAL_BYTES IMAGE_BYTES", bytes per ray not counting the image.
      */
     static String allocationLine(Scene s) {
-        com.sun.management.ThreadMXBean mx = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
-        long self = Thread.currentThread().getId();
+        boolean epsilon = false;
+        for (java.lang.management.GarbageCollectorMXBean gc : ManagementFactory.getGarbageCollectorMXBeans()) {
+            epsilon |= gc.getName().startsWith("Epsilon");
+        }
+        if (!epsilon || ManagementFactory.getRuntimeMXBean().getInputArguments().indexOf("-XX:-UseTLAB") < 0) {
+            throw new IllegalStateException("--alloc needs -XX:+UseEpsilonGC -XX:-UseTLAB (every thread's bytes, exactly)");
+        }
+        java.lang.management.MemoryMXBean heap = ManagementFactory.getMemoryMXBean();
         new ray.render.Renderer(s).threads(1).render();
         ray.render.Renderer r = new ray.render.Renderer(s).threads(1);
         s.prepare();   // build outside the measured span
-        long a0 = mx.getThreadAllocatedBytes(self);
+        long a0 = heap.getHeapMemoryUsage().getUsed();
         // the renderer calls prepare() itself: subtract what a build allocates, measured alone
         r.render();
-        long a1 = mx.getThreadAllocatedBytes(self);
+        long a1 = heap.getHeapMemoryUsage().getUsed();
         s.prepare();
-        long a2 = mx.getThreadAllocatedBytes(self);
+        long a2 = heap.getHeapMemoryUsage().getUsed();
         long rays = r.stats().total();
         long render = (a1 - a0) - (a2 - a1);
         long image = 24L * s.width * s.height;   // the result: 3 doubles per pixel, allocated once
