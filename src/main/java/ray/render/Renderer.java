@@ -452,64 +452,75 @@ public final class Renderer {
         }
     }
 
-    /** Pixels [bx, xe) x [by, ye) of {@link #packetTile}: their camera rays as one packet. */
+    /**
+     * Pixels [bx, xe) x [by, ye) of {@link #packetTile}: their camera rays as one packet. One loop over the
+     * square's pixels for the rays and one for the shading, each pixel's samples in a call of its own
+     * ({@link #packetRays}, {@link #packetShade}): a square's nested loops counted about 90 back-edges a call
+     * at n_s 1, enough for C2 to compile this method on stack before whole (gridTile's reason); now 2 a
+     * pixel.
+     */
     private void packetSquare(TraceContext ctx, int bx, int by, int xe, int ye, double[] au, double[] bv,
                               Sampler grid, Image image, int ox, int oy) {
+        RayPacket p = ctx.packet;
+        int sw = xe - bx, pixels = sw * (ye - by), count = ns * ns;
+        for (int i = 0; i < pixels; i++) {
+            packetRays(p.rays, i * count, bx + i % sw, by + i / sw, au, bv);
+        }
+        p.size = pixels * count;
+        scene.castCameras(p, ctx);
+        for (int i = 0; i < pixels; i++) {
+            packetShade(ctx, p, i * count, bx + i % sw, by + i / sw, grid, image, ox, oy);
+        }
+    }
+
+    /** Pixel (x, y)'s camera rays of {@link #packetSquare} into {@code rays[k..]}, sample by sample as {@link #gridPixel}'s. */
+    private void packetRays(Ray[] rays, int k, int x, int y, double[] au, double[] bv) {
         Camera cam = scene.camera;
         double ex = cam.eye.x, ey = cam.eye.y, ez = cam.eye.z, wx = cam.w.x, wy = cam.w.y, wz = cam.w.z;
-        int n = ns, count = n * n, iw = image.width;
-        double[] rgb = image.rgb;
+        int n = ns;
+        for (int j = 0; j < n; j++) {
+            int jb = 3 * (y * n + j);
+            double bx3 = bv[jb], by3 = bv[jb + 1], bz3 = bv[jb + 2];
+            for (int i = 0, ia = 3 * x * n; i < n; i++, ia += 3) {
+                double dx = au[ia] + bx3 - wx, dy = au[ia + 1] + by3 - wy, dz = au[ia + 2] + bz3 - wz;
+                double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+                Ray ray = rays[k++];
+                Vector3d o = ray.origin, d = ray.direction;
+                o.x = ex;
+                o.y = ey;
+                o.z = ez;
+                d.x = dx / len;
+                d.y = dy / len;
+                d.z = dz / len;
+                ray.tMin = 0;
+                ray.tMax = Double.POSITIVE_INFINITY;
+                ray.depth = 0;
+            }
+        }
+    }
+
+    /** Pixel (x, y) of {@link #packetSquare}, its samples the packet's rays k.., shaded, summed and written. */
+    private void packetShade(TraceContext ctx, RayPacket p, int k, int x, int y, Sampler grid, Image image, int ox, int oy) {
+        int count = ns * ns;
         Vector3d c = ctx.color(0);
         PixelSample sample = ctx.sample;
-        RayPacket p = ctx.packet;
-        Ray[] rays = p.rays;
-        int k = 0;
-        for (int y = by; y < ye; y++) {
-            for (int x = bx; x < xe; x++) {
-                for (int j = 0; j < n; j++) {
-                    int jb = 3 * (y * n + j);
-                    double bx3 = bv[jb], by3 = bv[jb + 1], bz3 = bv[jb + 2];
-                    for (int i = 0, ia = 3 * x * n; i < n; i++, ia += 3) {
-                        double dx = au[ia] + bx3 - wx, dy = au[ia + 1] + by3 - wy, dz = au[ia + 2] + bz3 - wz;
-                        double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
-                        Ray ray = rays[k++];
-                        Vector3d o = ray.origin, d = ray.direction;
-                        o.x = ex;
-                        o.y = ey;
-                        o.z = ez;
-                        d.x = dx / len;
-                        d.y = dy / len;
-                        d.z = dz / len;
-                        ray.tMin = 0;
-                        ray.tMax = Double.POSITIVE_INFINITY;
-                        ray.depth = 0;
-                    }
-                }
+        double r = 0, g = 0, b = 0;
+        for (int s = 0; s < count; s++, k++) {
+            sample.start(grid, x, y, s);
+            scene.shadeCamera(p, k, ctx, c);
+            if (Double.isFinite(c.x) && Double.isFinite(c.y) && Double.isFinite(c.z)) {
+                r += c.x;
+                g += c.y;
+                b += c.z;
+            } else {
+                ctx.stats.invalidSamples++;   // last line of defence: a NaN never reaches a pixel
             }
         }
-        p.size = k;
-        scene.castCameras(p, ctx);
-        k = 0;
-        for (int y = by; y < ye; y++) {
-            for (int x = bx; x < xe; x++) {
-                double r = 0, g = 0, b = 0;
-                for (int s = 0; s < count; s++, k++) {
-                    sample.start(grid, x, y, s);
-                    scene.shadeCamera(p, k, ctx, c);
-                    if (Double.isFinite(c.x) && Double.isFinite(c.y) && Double.isFinite(c.z)) {
-                        r += c.x;
-                        g += c.y;
-                        b += c.z;
-                    } else {
-                        ctx.stats.invalidSamples++;   // last line of defence: a NaN never reaches a pixel
-                    }
-                }
-                int q = 3 * ((y - oy) * iw + (x - ox));
-                rgb[q] = r / count;
-                rgb[q + 1] = g / count;
-                rgb[q + 2] = b / count;
-            }
-        }
+        double[] rgb = image.rgb;
+        int q = 3 * ((y - oy) * image.width + (x - ox));
+        rgb[q] = r / count;
+        rgb[q + 1] = g / count;
+        rgb[q + 2] = b / count;
     }
 
     /** One render thread's work on tiles: made once per thread with that thread's context. */
