@@ -370,7 +370,7 @@ public final class Renderer {
         // a pixel a call (gridPixel), not the pixels' loops here: a tile's loops would count thousands of
         // back-edges an invocation, so C2 compiled this method on stack at each of its loops before it
         // compiled it whole (three C2 compilations of one method, docs/performance.md, session 40); a
-        // pixel a call is compiled once, whole, after a few hundred pixels
+        // pixel a call is compiled once, whole, after about a thousand pixels
         for (int y = y0; y < y1; y++) {
             for (int x = x0; x < x1; x++) {
                 gridPixel(ctx, x, y, au, bv, dirs, grid, image, ox, oy);
