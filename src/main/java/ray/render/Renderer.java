@@ -422,11 +422,7 @@ public final class Renderer {
                 ctx.stats.invalidSamples++;   // last line of defence: a NaN never reaches a pixel
             }
         }
-        double[] rgb = image.rgb;
-        int k = 3 * ((y - oy) * image.width + (x - ox));
-        rgb[k] = r / count;
-        rgb[k + 1] = g / count;
-        rgb[k + 2] = b / count;
+        image.set(x - ox, y - oy, r / count, g / count, b / count);
     }
 
     /** Camera rays per packet ({@link #packetTile}): a square of pixels whose samples make about this many. */
@@ -516,11 +512,7 @@ public final class Renderer {
                 ctx.stats.invalidSamples++;   // last line of defence: a NaN never reaches a pixel
             }
         }
-        double[] rgb = image.rgb;
-        int q = 3 * ((y - oy) * image.width + (x - ox));
-        rgb[q] = r / count;
-        rgb[q + 1] = g / count;
-        rgb[q + 2] = b / count;
+        image.set(x - ox, y - oy, r / count, g / count, b / count);
     }
 
     /** One render thread's work on tiles: made once per thread with that thread's context. */
