@@ -213,6 +213,9 @@ public final class Throughput {
         return new double[] {bvh.nodeVisits(ctx) / n, bvh.primitiveTests(ctx) / n};
     }
 
+    /** Most warm-up passes beyond those asked for, while the JIT is still compiling ({@link #run}). */
+    static final int SETTLE_PASSES = 40;
+
     private Rate run(RayKind kind, boolean closest, int warmups, int passes) {
         double[] rays = sets[kind.ordinal()];
         Accelerator accel = scene.accelerator();
@@ -225,7 +228,28 @@ public final class Throughput {
         // a small set (a few thousand mirror rays) is traced several times per pass, so that a pass
         // lasts long enough to time (and to let the JIT settle) however few rays the scene casts
         int count = rays.length / STRIDE, repeat = Math.max(1, 200_000 / Math.max(1, count));
-        for (int p = -warmups; p < passes; p++) {
+        // warm-up: the passes asked for, then more until one pass goes by with no compilation finished in
+        // it (at most SETTLE_PASSES more): C2 compiles the traversal several times over its first second
+        // (a trap when a ray takes a branch the profile had never seen, then a recompilation), and a pass
+        // timed on code about to be thrown away measured that code, not the traversal's steady state
+        // (docs/performance.md, issue 20, session 41)
+        for (int p = 0; p < warmups; p++) {
+            hits = pass(accel, ctx, r, rec, rays, closest);
+        }
+        java.lang.management.CompilationMXBean jit = ManagementFactory.getCompilationMXBean();
+        boolean timed = jit != null && jit.isCompilationTimeMonitoringSupported();
+        long compiled = timed ? jit.getTotalCompilationTime() : 0;
+        for (int extra = 0; timed && extra < SETTLE_PASSES; extra++) {
+            for (int k = 0; k < repeat; k++) {
+                hits = pass(accel, ctx, r, rec, rays, closest);
+            }
+            long now = jit.getTotalCompilationTime();
+            if (now == compiled) {
+                break;
+            }
+            compiled = now;
+        }
+        for (int p = 0; p < passes; p++) {
             long c0 = mx.getCurrentThreadCpuTime();
             long t0 = System.nanoTime();
             for (int k = 0; k < repeat; k++) {
@@ -233,10 +257,8 @@ public final class Throughput {
             }
             long t1 = System.nanoTime();
             long c1 = mx.getCurrentThreadCpuTime();
-            if (p >= 0) {
-                times[p] = (t1 - t0) / 1e9;
-                cpu[p] = (c1 - c0) / 1e9;
-            }
+            times[p] = (t1 - t0) / 1e9;
+            cpu[p] = (c1 - c0) / 1e9;
         }
         Arrays.sort(times);
         Arrays.sort(cpu);
@@ -244,11 +266,43 @@ public final class Throughput {
                 cpu[passes / 2]);
     }
 
+    /** Rays a call of {@link #closestRays} or {@link #anyRays} traces. */
+    private static final int CHUNK = 256;
+
+    /**
+     * One pass over the rays in {@code a}, {@link #CHUNK} rays a call. Not one loop over all of them: a
+     * method called once a pass, its loop running a million times, is compiled on the stack, thrown
+     * away when the other query's pass comes, and compiled whole only after a dozen calls, so the passes
+     * timed on it measured C1's loop in some runs and C2's in others (mesh100k's camera rays at 4.1-4.6
+     * or 6.6-7.2 Mrays/s from run to run, docs/performance.md, issue 20, session 41). A method a query,
+     * called a few thousand times a pass, is compiled whole in the first pass and never sees the other
+     * query.
+     */
     private static int pass(Accelerator accel, TraceContext ctx, Ray r, IntersectionRecord rec, double[] a, boolean closest) {
         int hits = 0;
-        for (int i = 0; i < a.length; i += STRIDE) {
+        for (int i = 0; i < a.length; i += CHUNK * STRIDE) {
+            int end = Math.min(a.length, i + CHUNK * STRIDE);
+            hits += closest ? closestRays(accel, ctx, r, rec, a, i, end) : anyRays(accel, ctx, r, a, i, end);
+        }
+        return hits;
+    }
+
+    private static int closestRays(Accelerator accel, TraceContext ctx, Ray r, IntersectionRecord rec, double[] a, int from, int to) {
+        int hits = 0;
+        for (int i = from; i < to; i += STRIDE) {
             r.set(a[i], a[i + 1], a[i + 2], a[i + 3], a[i + 4], a[i + 5], a[i + 6], a[i + 7], 0);
-            if (closest ? accel.closestHit(r, rec, ctx) : accel.anyHit(r, ctx)) {
+            if (accel.closestHit(r, rec, ctx)) {
+                hits++;
+            }
+        }
+        return hits;
+    }
+
+    private static int anyRays(Accelerator accel, TraceContext ctx, Ray r, double[] a, int from, int to) {
+        int hits = 0;
+        for (int i = from; i < to; i += STRIDE) {
+            r.set(a[i], a[i + 1], a[i + 2], a[i + 3], a[i + 4], a[i + 5], a[i + 6], a[i + 7], 0);
+            if (accel.anyHit(r, ctx)) {
                 hits++;
             }
         }
