@@ -162,7 +162,7 @@ final class InProcessTables {
                 out.println("embree_rays.py or the raytracer's measurement failed:\n```\n" + text + "```\n");
                 return;
             }
-            out.println("This program in a fresh JVM with the full JIT (C2), median of 9 passes after 5 warm-up passes, "
+            out.println("This program in a fresh JVM with the full JIT (C2), median of 9 passes after at least 5 warm-up passes (more, up to 40, while the JIT is still compiling), "
                     + "measured just before and just after Embree's run; Embree's median of 7 from embree_rays.py.");
             out.println();
             out.println("| query | raytracer Mrays/s (before / after) | Embree 4 Mrays/s | raytracer / Embree |");

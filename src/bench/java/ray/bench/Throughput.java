@@ -18,7 +18,7 @@ import ray.accel.Accelerator;
  * camera rays with {@link RayKind} told by the ray-query layer's own counters (so no shading rule is
  * repeated here). Camera, mirror, refraction and user rays take the closest-hit query (with the hit
  * record filled in, as the renderer needs it), shadow rays the any-hit query. One thread, timed after
- * warm-up passes so the JIT has compiled the traversal; no shading.
+ * warm-up passes, and more until a pass finishes no compilation, so the JIT has compiled the traversal; no shading.
  */
 public final class Throughput {
 
